@@ -1,0 +1,72 @@
+package org.proactiverobotics.db;
+
+import com.zaxxer.hikari.HikariConfig;
+import com.zaxxer.hikari.HikariDataSource;
+
+/**
+ * Builds the connection pools both sides use: HikariCP over any JDBC URL (embedded H2 in MySQL
+ * mode by default, MariaDB or MySQL 8 for deployment).
+ */
+public final class Databases {
+
+    /** H2 settings that make it accept schema.sql and the MySQL dialect both sides write. */
+    public static final String H2_MYSQL_MODE = ";MODE=MySQL;DATABASE_TO_LOWER=TRUE;DB_CLOSE_DELAY=-1";
+
+    private Databases() {
+    }
+
+    /**
+     * The URL of a named in-memory H2 database in MySQL mode; it lives as long as the JVM
+     * (or until dropped), so several pools in one process share it.
+     *
+     * @param name letters, digits and underscores
+     * @return a JDBC URL
+     */
+    public static String embeddedH2Url(String name) {
+        if (!name.matches("[A-Za-z0-9_]+")) {
+            throw new IllegalArgumentException("H2 database name must be letters, digits or '_': " + name);
+        }
+        return "jdbc:h2:mem:" + name + H2_MYSQL_MODE;
+    }
+
+    /**
+     * A pool with this project's defaults: small (the workload is one writer per side), fast to
+     * fail when the server is gone (3 s), and named after its user for the logs.
+     *
+     * @param jdbcUrl  a JDBC URL (jdbc:h2:..., jdbc:mariadb://..., jdbc:mysql://...)
+     * @param user     the user, or null to take it from the URL
+     * @param password the password, or null
+     * @return a started pool; close it when done
+     */
+    public static HikariDataSource pool(String jdbcUrl, String user, String password) {
+        return new HikariDataSource(config(jdbcUrl, user, password));
+    }
+
+    /**
+     * The configuration {@link #pool} uses, for callers that need to adjust it (a shorter
+     * connection time-out on the robot side, for instance) before starting the pool.
+     *
+     * @param jdbcUrl  a JDBC URL
+     * @param user     the user, or null
+     * @param password the password, or null
+     * @return a configuration not yet used by any pool
+     */
+    public static HikariConfig config(String jdbcUrl, String user, String password) {
+        HikariConfig config = new HikariConfig();
+        config.setJdbcUrl(jdbcUrl);
+        if (user != null) {
+            config.setUsername(user);
+        }
+        if (password != null) {
+            config.setPassword(password);
+        }
+        config.setMaximumPoolSize(4);
+        config.setMinimumIdle(1);
+        config.setConnectionTimeout(3_000);
+        config.setValidationTimeout(1_000);
+        // Fail on first use rather than at construction, so callers can wait for a database.
+        config.setInitializationFailTimeout(-1);
+        config.setPoolName("proactive-" + (user == null ? "pool" : user));
+        return config;
+    }
+}

@@ -1,0 +1,99 @@
+package org.proactiverobotics.db;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.sql.Connection;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.List;
+import javax.sql.DataSource;
+
+/**
+ * The project's one schema (the root {@code schema.sql}, packaged in this jar) and the means to
+ * apply it. Applying is idempotent: every statement is {@code CREATE ... IF NOT EXISTS}.
+ */
+public final class Schema {
+
+    private static final String RESOURCE = "schema.sql";
+
+    private Schema() {
+    }
+
+    /**
+     * Creates every table that does not exist yet.
+     *
+     * @param dataSource the database
+     * @throws SQLException naming the statement that failed
+     */
+    public static void apply(DataSource dataSource) throws SQLException {
+        try (Connection connection = dataSource.getConnection(); Statement statement = connection.createStatement()) {
+            for (String sql : statements()) {
+                try {
+                    statement.execute(sql);
+                } catch (SQLException e) {
+                    throw new SQLException("schema.sql: statement failed: " + firstLine(sql) + ": " + e.getMessage(),
+                            e.getSQLState(), e.getErrorCode(), e);
+                }
+            }
+        }
+    }
+
+    /** @return schema.sql's text, as packaged */
+    public static String text() {
+        try (InputStream in = Schema.class.getResourceAsStream(RESOURCE)) {
+            if (in == null) {
+                throw new IllegalStateException("schema.sql is missing from the db jar");
+            }
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** @return schema.sql split into statements, comments removed */
+    public static List<String> statements() {
+        return split(text());
+    }
+
+    /** @return the names of the tables schema.sql creates, in order */
+    public static List<String> tableNames() {
+        List<String> names = new ArrayList<>();
+        for (String sql : statements()) {
+            String[] words = sql.trim().split("\\s+");
+            if (words.length > 5 && words[0].equalsIgnoreCase("CREATE") && words[1].equalsIgnoreCase("TABLE")) {
+                names.add(words[5]);
+            }
+        }
+        return names;
+    }
+
+    /** Splits a script on semicolons that end a line; "--" comments are dropped. */
+    static List<String> split(String script) {
+        List<String> out = new ArrayList<>();
+        StringBuilder current = new StringBuilder();
+        for (String line : script.split("\n")) {
+            String trimmed = line.strip();
+            if (trimmed.isEmpty() || trimmed.startsWith("--")) {
+                continue;
+            }
+            current.append(line).append('\n');
+            if (trimmed.endsWith(";")) {
+                String sql = current.toString().strip();
+                out.add(sql.substring(0, sql.length() - 1));
+                current.setLength(0);
+            }
+        }
+        if (!current.toString().isBlank()) {
+            out.add(current.toString().strip());
+        }
+        return out;
+    }
+
+    private static String firstLine(String sql) {
+        int newline = sql.indexOf('\n');
+        return newline < 0 ? sql : sql.substring(0, newline);
+    }
+}

@@ -1,0 +1,90 @@
+package org.proactiverobotics.db;
+
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.UUID;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Assumptions;
+
+/**
+ * Opens fresh test databases. H2 is always there; MariaDB only when the environment variable
+ * {@value #MARIADB_URL_VARIABLE} holds a JDBC URL of a server where the user may create
+ * databases (CI sets it). Without it, MariaDB cases are skipped with a message saying so.
+ *
+ * <pre>{@code
+ * @ParameterizedTest @EnumSource(DatabaseKind.class)
+ * void saves(DatabaseKind kind) throws Exception {
+ *     try (TestDatabase db = TestDatabases.open(kind)) { ... db.dataSource() ... }
+ * }
+ * }</pre>
+ */
+public final class TestDatabases {
+
+    /** The environment variable that names the MariaDB test server. */
+    public static final String MARIADB_URL_VARIABLE = "PROACTIVE_TEST_MARIADB_URL";
+
+    private static final Pattern URL = Pattern.compile("(jdbc:(?:mariadb|mysql)://[^/?]+)/([^?]*)(\\?.*)?");
+
+    private TestDatabases() {
+    }
+
+    /**
+     * Opens a fresh, empty database with the schema applied.
+     *
+     * @param kind which database
+     * @return the database; close it at the end of the test
+     */
+    public static TestDatabase open(DatabaseKind kind) throws SQLException {
+        String unique = "t" + UUID.randomUUID().toString().replace("-", "").substring(0, 12);
+        return switch (kind) {
+            case H2 -> new TestDatabase(kind, Databases.embeddedH2Url(unique), "sa", "", () -> dropH2(unique));
+            case MARIADB -> openMariaDb(unique);
+        };
+    }
+
+    /** @return the MariaDB test URL, or null when none is configured */
+    public static String mariaDbUrl() {
+        String url = System.getenv(MARIADB_URL_VARIABLE);
+        return url == null || url.isBlank() ? null : url.trim();
+    }
+
+    private static TestDatabase openMariaDb(String unique) throws SQLException {
+        String base = mariaDbUrl();
+        Assumptions.assumeTrue(base != null,
+                "MariaDB tests skipped: set " + MARIADB_URL_VARIABLE
+                        + " (e.g. jdbc:mariadb://127.0.0.1:3306/proactive_test?user=root&password=) to run them");
+        Matcher m = URL.matcher(base);
+        if (!m.matches()) {
+            throw new IllegalArgumentException(MARIADB_URL_VARIABLE + " is not a jdbc:mariadb:// or jdbc:mysql:// URL: " + base);
+        }
+        String server = m.group(1);
+        String query = m.group(3) == null ? "" : m.group(3);
+        String database = "proactive_" + unique;
+        try (Connection c = DriverManager.getConnection(base); Statement s = c.createStatement()) {
+            s.execute("CREATE DATABASE " + database);
+        }
+        String url = server + "/" + database + query;
+        return new TestDatabase(DatabaseKind.MARIADB, url, null, null, () -> dropMariaDb(base, database));
+    }
+
+    private static void dropMariaDb(String base, String database) {
+        try (Connection c = DriverManager.getConnection(base); Statement s = c.createStatement()) {
+            s.execute("DROP DATABASE IF EXISTS " + database);
+        } catch (SQLException e) {
+            throw new IllegalStateException("could not drop test database " + database, e);
+        }
+    }
+
+    private static void dropH2(String name) {
+        try (Connection c = DriverManager.getConnection(Databases.embeddedH2Url(name), "sa", "");
+             Statement s = c.createStatement()) {
+            s.execute("DROP ALL OBJECTS");
+            s.execute("SHUTDOWN");
+        } catch (SQLException e) {
+            throw new IllegalStateException("could not drop H2 test database " + name, e);
+        }
+    }
+}

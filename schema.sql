@@ -1,0 +1,159 @@
+-- proactive-robotics: the one schema.
+-- Applies unchanged to H2 (MODE=MySQL;DATABASE_TO_LOWER=TRUE) and to MySQL 8 / MariaDB 10.6+.
+-- Re-applying it is harmless (IF NOT EXISTS everywhere).
+--
+-- Conventions: every table has robot_id, so several robots can share one database; readings
+-- carry the simulated time in milliseconds (sim_time_ms); column names carry units:
+-- _m metres, _rad radians, _pct percent (0-100), _ms milliseconds.
+-- The robot writes readings; the engine writes requests, commands and its own state.
+-- "Newest" reads go through (robot_id, id) indexes: ids grow with time on both sides.
+
+-- ======================================================================================
+-- The paper's eight tables
+-- ======================================================================================
+
+-- GPS readings, written by the robot when the engine asks (sensor_requests.sensor = 'GPS').
+CREATE TABLE IF NOT EXISTS gps_stored_values (
+  id          BIGINT AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT    NOT NULL,
+  sim_time_ms BIGINT NOT NULL,
+  x_m         DOUBLE NOT NULL,
+  y_m         DOUBLE NOT NULL,
+  INDEX idx_gps_newest (robot_id, id)
+);
+
+-- Inertial unit readings (sensor 'IU'); yaw 0 = +x axis, counter-clockwise positive.
+CREATE TABLE IF NOT EXISTS iudata (
+  id          BIGINT AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT    NOT NULL,
+  sim_time_ms BIGINT NOT NULL,
+  roll_rad    DOUBLE NOT NULL,
+  pitch_rad   DOUBLE NOT NULL,
+  yaw_rad     DOUBLE NOT NULL,
+  INDEX idx_iu_newest (robot_id, id)
+);
+
+-- Distance sensor readings (sensor 'DS'): one row per sensor; one reading = the rows of one
+-- robot sharing a sim_time_ms. angle_rad is the sensor's direction relative to the robot's
+-- heading; distance_m equals range_m when the ray hits nothing.
+CREATE TABLE IF NOT EXISTS distance_sensor_data (
+  id           BIGINT AUTO_INCREMENT PRIMARY KEY,
+  robot_id     INT    NOT NULL,
+  sim_time_ms  BIGINT NOT NULL,
+  sensor_index INT    NOT NULL,
+  angle_rad    DOUBLE NOT NULL,
+  distance_m   DOUBLE NOT NULL,
+  range_m      DOUBLE NOT NULL,
+  INDEX idx_ds_newest (robot_id, sim_time_ms)
+);
+
+-- Battery readings (sensor 'BATTERY'); the robot writes one at start with the full level.
+CREATE TABLE IF NOT EXISTS battery_level (
+  id          BIGINT  AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT     NOT NULL,
+  sim_time_ms BIGINT  NOT NULL,
+  level_pct   DOUBLE  NOT NULL,
+  charging    BOOLEAN NOT NULL DEFAULT FALSE,
+  INDEX idx_battery_newest (robot_id, id)
+);
+
+-- The level a recharge stops at (mission row, seeded from the world file).
+CREATE TABLE IF NOT EXISTS battery_recharged (
+  robot_id  INT    NOT NULL PRIMARY KEY,
+  level_pct DOUBLE NOT NULL
+);
+
+-- The checkpoints to reach, in seq order (mission rows, seeded from the world file).
+-- The engine marks them reached.
+CREATE TABLE IF NOT EXISTS checkpoints (
+  robot_id            INT     NOT NULL,
+  seq                 INT     NOT NULL,
+  x_m                 DOUBLE  NOT NULL,
+  y_m                 DOUBLE  NOT NULL,
+  radius_m            DOUBLE  NOT NULL,
+  reached             BOOLEAN NOT NULL DEFAULT FALSE,
+  reached_sim_time_ms BIGINT,
+  PRIMARY KEY (robot_id, seq)
+);
+
+-- The commands the engine sends; the robot executes the newest one.
+-- command is text: a Mode name and its arguments, e.g. "STOP", "DRIVE 0.40 0.35"
+-- (left and right wheel speeds in m/s), "RECHARGE". sim_time_ms is the simulated time of
+-- the newest reading the engine based it on; scenario is the one whose suggestion won.
+CREATE TABLE IF NOT EXISTS engine_comments (
+  id          BIGINT       AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT          NOT NULL,
+  iteration   BIGINT       NOT NULL,
+  sim_time_ms BIGINT       NOT NULL,
+  scenario    VARCHAR(64)  NOT NULL,
+  command     VARCHAR(255) NOT NULL,
+  created_at  TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3),
+  INDEX idx_comments_newest (robot_id, id)
+);
+
+-- Where the robot recharges (mission row, seeded from the world file).
+CREATE TABLE IF NOT EXISTS recharge_station (
+  robot_id INT    NOT NULL PRIMARY KEY,
+  x_m      DOUBLE NOT NULL,
+  y_m      DOUBLE NOT NULL,
+  radius_m DOUBLE NOT NULL
+);
+
+-- ======================================================================================
+-- The engine's own tables
+-- ======================================================================================
+
+-- Requests for fresh sensor data (Data acquisition scenario). sensor is one of
+-- 'GPS', 'IU', 'DS', 'BATTERY'. Pending while answered_sim_time_ms is NULL; the robot
+-- answers by writing a reading and setting answered_sim_time_ms.
+CREATE TABLE IF NOT EXISTS sensor_requests (
+  id                    BIGINT      AUTO_INCREMENT PRIMARY KEY,
+  robot_id              INT         NOT NULL,
+  sensor                VARCHAR(16) NOT NULL,
+  iteration             BIGINT      NOT NULL,
+  answered_sim_time_ms  BIGINT,
+  INDEX idx_requests_pending (robot_id, answered_sim_time_ms)
+);
+
+-- The strategy: the PriorityArray. One row per CommandArray slot; the highest priority is
+-- read first. Changing a row while the engine runs changes the next iteration's decision.
+CREATE TABLE IF NOT EXISTS strategy (
+  robot_id      INT          NOT NULL,
+  slot          INT          NOT NULL,
+  scenario      VARCHAR(64)  NOT NULL,
+  priority      INT          NOT NULL,
+  strategy_name VARCHAR(64)  NOT NULL,
+  updated_at    TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3),
+  PRIMARY KEY (robot_id, slot)
+);
+
+-- The engine's saved state (the paper's failsafe), written in one transaction at the end of
+-- every iteration: the iteration number and the memory scenarios share (JSON) ...
+CREATE TABLE IF NOT EXISTS engine_state (
+  robot_id    INT          NOT NULL PRIMARY KEY,
+  iteration   BIGINT       NOT NULL,
+  memory_json LONGTEXT     NOT NULL,
+  saved_at    TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3)
+);
+
+-- ... and nextQueue, rule by rule in queue order (rule type + fields as JSON, with Gson).
+CREATE TABLE IF NOT EXISTS engine_queue (
+  robot_id  INT          NOT NULL,
+  position  INT          NOT NULL,
+  rule_type VARCHAR(255) NOT NULL,
+  rule_json LONGTEXT     NOT NULL,
+  PRIMARY KEY (robot_id, position)
+);
+
+-- Every failure of a rule part: which rule, of which scenario, which part, and why.
+CREATE TABLE IF NOT EXISTS rule_failures (
+  id         BIGINT        AUTO_INCREMENT PRIMARY KEY,
+  robot_id   INT           NOT NULL,
+  iteration  BIGINT        NOT NULL,
+  rule       VARCHAR(255)  NOT NULL,
+  scenario   VARCHAR(64)   NOT NULL,
+  part       VARCHAR(32)   NOT NULL,
+  message    VARCHAR(1000) NOT NULL,
+  created_at TIMESTAMP(3)  NOT NULL DEFAULT CURRENT_TIMESTAMP(3),
+  INDEX idx_failures_iteration (robot_id, iteration)
+);
