@@ -1,0 +1,53 @@
+package org.proactiverobotics.app;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+
+/**
+ * The {@code proactive} command line: one jar, one subcommand per job (DESIGN section 7).
+ * Exit codes: 0 success, 1 mission failed, 2 bad input, 3 infrastructure failure.
+ */
+@Command(name = "proactive",
+        mixinStandardHelpOptions = true,
+        versionProvider = Main.Version.class,
+        description = "Proactive Engine driving a simulated robot through a shared SQL database.",
+        subcommands = {
+                CommandLine.HelpCommand.class,
+        })
+public final class Main implements Runnable {
+
+    /** Exit code: the mission failed (time limit, battery flat, ...). */
+    public static final int EXIT_MISSION_FAILED = 1;
+    /** Exit code: bad input (usage, invalid world or option). */
+    public static final int EXIT_BAD_INPUT = 2;
+    /** Exit code: infrastructure failure (database unreachable, ...). */
+    public static final int EXIT_INFRASTRUCTURE = 3;
+
+    @CommandLine.Spec
+    private CommandLine.Model.CommandSpec spec;
+
+    public static void main(String[] args) {
+        System.exit(commandLine().execute(args));
+    }
+
+    /** @return the configured command line, for main and for tests */
+    public static CommandLine commandLine() {
+        CommandLine cl = new CommandLine(new Main());
+        cl.setExitCodeExceptionMapper(e -> e instanceof CommandLine.ParameterException ? EXIT_BAD_INPUT : EXIT_INFRASTRUCTURE);
+        return cl;
+    }
+
+    @Override
+    public void run() {
+        throw new CommandLine.ParameterException(spec.commandLine(), "Missing subcommand");
+    }
+
+    /** Reads the version from the jar's manifest. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            String version = Main.class.getPackage().getImplementationVersion();
+            return new String[] {"proactive-robotics " + (version == null ? "(development build)" : version)};
+        }
+    }
+}
