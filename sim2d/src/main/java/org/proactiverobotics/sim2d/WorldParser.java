@@ -1,0 +1,438 @@
+package org.proactiverobotics.sim2d;
+
+import java.io.IOException;
+import java.io.StringReader;
+import java.math.BigDecimal;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Set;
+import java.util.regex.Pattern;
+
+import com.google.gson.Gson;
+import com.google.gson.JsonArray;
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParseException;
+import com.google.gson.JsonPrimitive;
+import com.google.gson.Strictness;
+import com.google.gson.stream.JsonReader;
+import com.google.gson.stream.JsonToken;
+
+/**
+ * Reads a world file's JSON into a {@link WorldSpec}, collecting every problem rather than stopping at the
+ * first (DESIGN section 6). One instance per file.
+ */
+final class WorldParser {
+
+    private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_-]+");
+    private static final Set<String> ROOT_KEYS = Set.of("name", "timeStepMs", "maxSimTimeS", "seed", "arena", "robot",
+            "obstacles", "checkpoints", "checkpointRadiusM", "rechargeStation", "battery");
+    private static final Set<String> ARENA_KEYS = Set.of("radiusM");
+    private static final Set<String> ROBOT_KEYS = Set.of("x", "y", "headingDeg", "radiusM", "maxSpeedMps", "sensorRangeM");
+    private static final Set<String> BOX_KEYS = Set.of("shape", "x", "y", "widthM", "heightM", "angleDeg");
+    private static final Set<String> CIRCLE_KEYS = Set.of("shape", "x", "y", "radiusM");
+    private static final Set<String> POINT_KEYS = Set.of("x", "y");
+    private static final Set<String> STATION_KEYS = Set.of("x", "y", "radiusM");
+    private static final Set<String> BATTERY_KEYS = Set.of("initial", "drainPerMeter", "rechargeTo", "rechargeRatePerS");
+
+    /** What a number must satisfy beyond being finite. */
+    private enum Bound { ANY, POSITIVE, NON_NEGATIVE, PERCENT, POSITIVE_PERCENT }
+
+    private final List<String> problems = new ArrayList<>();
+
+    /**
+     * @param json   the file's text
+     * @param source what was read, for the exception's message
+     * @return the validated world
+     * @throws WorldValidationException listing every problem
+     */
+    WorldSpec parse(String json, String source) {
+        JsonElement rootElement = readJson(json);
+        if (rootElement == null) {
+            throw new WorldValidationException(source, problems);
+        }
+        if (!rootElement.isJsonObject()) {
+            problems.add("(root): expected a JSON object, got " + kind(rootElement));
+            throw new WorldValidationException(source, problems);
+        }
+        JsonObject root = rootElement.getAsJsonObject();
+        unknownKeys(root, "", ROOT_KEYS);
+
+        String name = name(root);
+        Integer timeStepMs = timeStep(root);
+        Double maxSimTimeS = number(root, "", "maxSimTimeS", false, Bound.POSITIVE, WorldSpec.DEFAULT_MAX_SIM_TIME_S);
+        Long seed = seed(root);
+        WorldSpec.Arena arena = arena(root);
+        WorldSpec.Robot robot = robot(root);
+        List<WorldSpec.Obstacle> obstacles = obstacles(root);
+        List<WorldSpec.Checkpoint> checkpoints = checkpoints(root);
+        Double checkpointRadiusM = number(root, "", "checkpointRadiusM", false, Bound.POSITIVE,
+                WorldSpec.DEFAULT_CHECKPOINT_RADIUS_M);
+        WorldSpec.RechargeStation station = station(root);
+        WorldSpec.Battery battery = battery(root);
+
+        if (arena != null && robot != null && obstacles != null) {
+            placement("robot", "start", robot.x(), robot.y(), arena, robot, obstacles);
+            if (checkpoints != null) {
+                for (int i = 0; i < checkpoints.size(); i++) {
+                    WorldSpec.Checkpoint c = checkpoints.get(i);
+                    if (c != null) {
+                        placement("checkpoints[" + i + "]", "checkpoint", c.x(), c.y(), arena, robot, obstacles);
+                    }
+                }
+            }
+            if (station != null) {
+                placement("rechargeStation", "station", station.x(), station.y(), arena, robot, obstacles);
+            }
+        }
+        if (!problems.isEmpty()) {
+            throw new WorldValidationException(source, problems);
+        }
+        return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, robot, obstacles, checkpoints,
+                checkpointRadiusM, station, battery);
+    }
+
+    /** Parses strictly (no comments, no NaN, one value); a syntax error becomes the only problem. */
+    private JsonElement readJson(String json) {
+        try {
+            JsonReader reader = new JsonReader(new StringReader(json));
+            reader.setStrictness(Strictness.STRICT);
+            if (reader.peek() == JsonToken.END_DOCUMENT) {
+                problems.add("(root): malformed JSON: the file is empty");
+                return null;
+            }
+            JsonElement element = new Gson().getAdapter(JsonElement.class).read(reader);
+            if (reader.peek() != JsonToken.END_DOCUMENT) {
+                problems.add("(root): malformed JSON: unexpected content after the top-level value at " + reader.getPath());
+                return null;
+            }
+            return element;
+        } catch (IOException | JsonParseException | IllegalStateException e) {
+            problems.add("(root): malformed JSON: " + e.getMessage());
+            return null;
+        }
+    }
+
+    // ---- sections ----
+
+    private String name(JsonObject root) {
+        JsonElement e = root.get("name");
+        if (e == null) {
+            problems.add("name: missing required key");
+            return null;
+        }
+        if (!isString(e)) {
+            problems.add("name: expected a string, got " + kind(e));
+            return null;
+        }
+        String name = e.getAsString();
+        if (!NAME.matcher(name).matches()) {
+            problems.add("name: must be letters, digits, '-' or '_' (at least one), got \"" + name + "\"");
+            return null;
+        }
+        return name;
+    }
+
+    private Integer timeStep(JsonObject root) {
+        Double d = number(root, "", "timeStepMs", false, Bound.ANY, (double) WorldSpec.DEFAULT_TIME_STEP_MS);
+        if (d == null) {
+            return null;
+        }
+        if (d != Math.rint(d) || d < 1 || d > 1000) {
+            problems.add("timeStepMs: must be an integer from 1 to 1000, got " + fmt(d));
+            return null;
+        }
+        return d.intValue();
+    }
+
+    private Long seed(JsonObject root) {
+        JsonElement e = root.get("seed");
+        if (e == null) {
+            return WorldSpec.DEFAULT_SEED;
+        }
+        if (!isNumber(e)) {
+            problems.add("seed: expected an integer, got " + kind(e));
+            return null;
+        }
+        try {
+            return new BigDecimal(e.getAsString()).longValueExact();
+        } catch (ArithmeticException | NumberFormatException ex) {
+            problems.add("seed: must be an integer from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE + ", got " + e.getAsString());
+            return null;
+        }
+    }
+
+    private WorldSpec.Arena arena(JsonObject root) {
+        JsonObject o = object(root, "", "arena", true);
+        if (o == null) {
+            return null;
+        }
+        unknownKeys(o, "arena", ARENA_KEYS);
+        Double r = number(o, "arena", "radiusM", true, Bound.POSITIVE, null);
+        return r == null ? null : new WorldSpec.Arena(r);
+    }
+
+    private WorldSpec.Robot robot(JsonObject root) {
+        JsonObject o = object(root, "", "robot", true);
+        if (o == null) {
+            return null;
+        }
+        unknownKeys(o, "robot", ROBOT_KEYS);
+        Double x = number(o, "robot", "x", true, Bound.ANY, null);
+        Double y = number(o, "robot", "y", true, Bound.ANY, null);
+        Double h = number(o, "robot", "headingDeg", true, Bound.ANY, null);
+        Double r = number(o, "robot", "radiusM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_RADIUS_M);
+        Double v = number(o, "robot", "maxSpeedMps", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS);
+        Double s = number(o, "robot", "sensorRangeM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M);
+        if (x == null || y == null || h == null || r == null || v == null || s == null) {
+            return null;
+        }
+        return new WorldSpec.Robot(x, y, h, r, v, s);
+    }
+
+    /** @return the obstacles, or null when any is invalid (so placement checks are skipped) */
+    private List<WorldSpec.Obstacle> obstacles(JsonObject root) {
+        JsonElement e = root.get("obstacles");
+        if (e == null) {
+            return List.of();
+        }
+        if (!e.isJsonArray()) {
+            problems.add("obstacles: expected an array, got " + kind(e));
+            return null;
+        }
+        JsonArray array = e.getAsJsonArray();
+        List<WorldSpec.Obstacle> result = new ArrayList<>();
+        boolean allValid = true;
+        for (int i = 0; i < array.size(); i++) {
+            WorldSpec.Obstacle o = obstacle(array.get(i), "obstacles[" + i + "]");
+            allValid &= o != null;
+            result.add(o);
+        }
+        return allValid ? result : null;
+    }
+
+    private WorldSpec.Obstacle obstacle(JsonElement e, String path) {
+        if (!e.isJsonObject()) {
+            problems.add(path + ": expected an object, got " + kind(e));
+            return null;
+        }
+        JsonObject o = e.getAsJsonObject();
+        JsonElement shapeElement = o.get("shape");
+        if (shapeElement == null) {
+            problems.add(path + ".shape: missing required key");
+            return null;
+        }
+        if (!isString(shapeElement)) {
+            problems.add(path + ".shape: expected a string, got " + kind(shapeElement));
+            return null;
+        }
+        String shape = shapeElement.getAsString();
+        if (WorldSpec.Obstacle.BOX.equals(shape)) {
+            unknownKeys(o, path, BOX_KEYS);
+            Double x = number(o, path, "x", true, Bound.ANY, null);
+            Double y = number(o, path, "y", true, Bound.ANY, null);
+            Double w = number(o, path, "widthM", true, Bound.POSITIVE, null);
+            Double h = number(o, path, "heightM", true, Bound.POSITIVE, null);
+            Double a = number(o, path, "angleDeg", false, Bound.ANY, 0.0);
+            if (x == null || y == null || w == null || h == null || a == null) {
+                return null;
+            }
+            return WorldSpec.Obstacle.box(x, y, w, h, a);
+        }
+        if (WorldSpec.Obstacle.CIRCLE.equals(shape)) {
+            unknownKeys(o, path, CIRCLE_KEYS);
+            Double x = number(o, path, "x", true, Bound.ANY, null);
+            Double y = number(o, path, "y", true, Bound.ANY, null);
+            Double r = number(o, path, "radiusM", true, Bound.POSITIVE, null);
+            if (x == null || y == null || r == null) {
+                return null;
+            }
+            return WorldSpec.Obstacle.circle(x, y, r);
+        }
+        problems.add(path + ".shape: unknown shape \"" + shape + "\" (expected \"box\" or \"circle\")");
+        return null;
+    }
+
+    /** @return the checkpoints, possibly with null entries for invalid ones, or null when unusable */
+    private List<WorldSpec.Checkpoint> checkpoints(JsonObject root) {
+        JsonElement e = root.get("checkpoints");
+        if (e == null) {
+            problems.add("checkpoints: missing required key");
+            return null;
+        }
+        if (!e.isJsonArray()) {
+            problems.add("checkpoints: expected an array, got " + kind(e));
+            return null;
+        }
+        JsonArray array = e.getAsJsonArray();
+        if (array.isEmpty()) {
+            problems.add("checkpoints: must list at least one checkpoint");
+            return null;
+        }
+        List<WorldSpec.Checkpoint> result = new ArrayList<>();
+        for (int i = 0; i < array.size(); i++) {
+            String path = "checkpoints[" + i + "]";
+            JsonElement c = array.get(i);
+            if (!c.isJsonObject()) {
+                problems.add(path + ": expected an object, got " + kind(c));
+                result.add(null);
+                continue;
+            }
+            unknownKeys(c.getAsJsonObject(), path, POINT_KEYS);
+            Double x = number(c.getAsJsonObject(), path, "x", true, Bound.ANY, null);
+            Double y = number(c.getAsJsonObject(), path, "y", true, Bound.ANY, null);
+            result.add(x == null || y == null ? null : new WorldSpec.Checkpoint(x, y));
+        }
+        return java.util.Collections.unmodifiableList(result);
+    }
+
+    private WorldSpec.RechargeStation station(JsonObject root) {
+        JsonObject o = object(root, "", "rechargeStation", true);
+        if (o == null) {
+            return null;
+        }
+        unknownKeys(o, "rechargeStation", STATION_KEYS);
+        Double x = number(o, "rechargeStation", "x", true, Bound.ANY, null);
+        Double y = number(o, "rechargeStation", "y", true, Bound.ANY, null);
+        Double r = number(o, "rechargeStation", "radiusM", true, Bound.POSITIVE, null);
+        return x == null || y == null || r == null ? null : new WorldSpec.RechargeStation(x, y, r);
+    }
+
+    private WorldSpec.Battery battery(JsonObject root) {
+        if (root.get("battery") == null) {
+            return WorldSpec.Battery.DEFAULT;
+        }
+        JsonObject o = object(root, "", "battery", false);
+        if (o == null) {
+            return null;
+        }
+        unknownKeys(o, "battery", BATTERY_KEYS);
+        WorldSpec.Battery d = WorldSpec.Battery.DEFAULT;
+        Double initial = number(o, "battery", "initial", false, Bound.POSITIVE_PERCENT, d.initial());
+        Double drain = number(o, "battery", "drainPerMeter", false, Bound.NON_NEGATIVE, d.drainPerMeter());
+        Double to = number(o, "battery", "rechargeTo", false, Bound.POSITIVE_PERCENT, d.rechargeTo());
+        Double rate = number(o, "battery", "rechargeRatePerS", false, Bound.POSITIVE, d.rechargeRatePerS());
+        if (initial == null || drain == null || to == null || rate == null) {
+            return null;
+        }
+        return new WorldSpec.Battery(initial, drain, to, rate);
+    }
+
+    /** Checks that the robot's centre can be at (x, y): inside the arena and clear of every obstacle. */
+    private void placement(String path, String what, double x, double y, WorldSpec.Arena arena, WorldSpec.Robot robot,
+                           List<WorldSpec.Obstacle> obstacles) {
+        double reach = arena.radiusM() - robot.radiusM();
+        double from = Math.sqrt(x * x + y * y);
+        if (from > reach) {
+            problems.add(String.format(Locale.ROOT,
+                    "%s: %s (%s, %s) is outside the arena: %s m from the centre, but the robot's centre (radius %s m) "
+                            + "stays within %s m",
+                    path, what, fmt(x), fmt(y), fmt(from), fmt(robot.radiusM()), fmt(reach)));
+        }
+        for (int i = 0; i < obstacles.size(); i++) {
+            double gap = obstacles.get(i).distanceTo(x, y);
+            if (gap < robot.radiusM()) {
+                problems.add(String.format(Locale.ROOT,
+                        "%s: %s (%s, %s) is inside obstacle obstacles[%d]: the robot (radius %s m) would overlap it",
+                        path, what, fmt(x), fmt(y), i, fmt(robot.radiusM())));
+            }
+        }
+    }
+
+    // ---- helpers ----
+
+    private void unknownKeys(JsonObject o, String path, Set<String> allowed) {
+        for (Map.Entry<String, JsonElement> entry : o.entrySet()) {
+            if (!allowed.contains(entry.getKey())) {
+                problems.add(join(path, entry.getKey()) + ": unknown key (expected one of "
+                        + allowed.stream().sorted().toList() + ")");
+            }
+        }
+    }
+
+    private JsonObject object(JsonObject parent, String path, String key, boolean required) {
+        JsonElement e = parent.get(key);
+        if (e == null) {
+            if (required) {
+                problems.add(join(path, key) + ": missing required key");
+            }
+            return null;
+        }
+        if (!e.isJsonObject()) {
+            problems.add(join(path, key) + ": expected an object, got " + kind(e));
+            return null;
+        }
+        return e.getAsJsonObject();
+    }
+
+    /** @return the number, its default when absent and optional, or null after recording a problem */
+    private Double number(JsonObject o, String path, String key, boolean required, Bound bound, Double dflt) {
+        String p = join(path, key);
+        JsonElement e = o.get(key);
+        if (e == null) {
+            if (required) {
+                problems.add(p + ": missing required key");
+            }
+            return dflt;
+        }
+        if (!isNumber(e)) {
+            problems.add(p + ": expected a number, got " + kind(e));
+            return null;
+        }
+        double d = e.getAsDouble();
+        if (!Double.isFinite(d)) {
+            problems.add(p + ": must be a finite number, got " + e.getAsString());
+            return null;
+        }
+        String rule = switch (bound) {
+            case ANY -> null;
+            case POSITIVE -> d > 0 ? null : "must be > 0";
+            case NON_NEGATIVE -> d >= 0 ? null : "must be >= 0";
+            case PERCENT -> d >= 0 && d <= 100 ? null : "must be from 0 to 100";
+            case POSITIVE_PERCENT -> d > 0 && d <= 100 ? null : "must be > 0 and <= 100";
+        };
+        if (rule != null) {
+            problems.add(p + ": " + rule + ", got " + e.getAsString());
+            return null;
+        }
+        return d;
+    }
+
+    private static boolean isNumber(JsonElement e) {
+        return e.isJsonPrimitive() && e.getAsJsonPrimitive().isNumber();
+    }
+
+    private static boolean isString(JsonElement e) {
+        return e.isJsonPrimitive() && e.getAsJsonPrimitive().isString();
+    }
+
+    private static String kind(JsonElement e) {
+        if (e.isJsonNull()) {
+            return "null";
+        }
+        if (e.isJsonObject()) {
+            return "an object";
+        }
+        if (e.isJsonArray()) {
+            return "an array";
+        }
+        JsonPrimitive p = e.getAsJsonPrimitive();
+        if (p.isBoolean()) {
+            return "a boolean (" + p.getAsBoolean() + ")";
+        }
+        if (p.isString()) {
+            return "a string (\"" + p.getAsString() + "\")";
+        }
+        return "a number (" + p.getAsString() + ")";
+    }
+
+    private static String join(String path, String key) {
+        return path.isEmpty() ? key : path + "." + key;
+    }
+
+    private static String fmt(double d) {
+        return String.format(Locale.ROOT, "%.2f", d);
+    }
+}

@@ -1,0 +1,208 @@
+package org.proactiverobotics.sim2d;
+
+import java.util.List;
+import java.util.Objects;
+
+/**
+ * A parsed and validated world file (DESIGN section 6), with every default applied.
+ * <p>
+ * Units are those of the file: metres, seconds, degrees, percent. Obtain one from {@link WorldFiles};
+ * the canonical constructors do not validate (tests and benchmarks build worlds directly).
+ *
+ * @param name              the world's name (letters, digits, {@code -}, {@code _})
+ * @param timeStepMs        the fixed simulation step in milliseconds (1–1000)
+ * @param maxSimTimeS       the mission's time limit in simulated seconds
+ * @param seed              the seed of every random draw (sensor noise)
+ * @param arena             the circular arena centred on (0, 0)
+ * @param robot             the robot's start pose and properties
+ * @param obstacles         the static obstacles, possibly none
+ * @param checkpoints       the checkpoints, visited in this order (at least one)
+ * @param checkpointRadiusM how close, in metres, the robot's centre must come to a checkpoint
+ * @param rechargeStation   the recharge station
+ * @param battery           the battery's parameters
+ */
+public record WorldSpec(
+        String name,
+        int timeStepMs,
+        double maxSimTimeS,
+        long seed,
+        Arena arena,
+        Robot robot,
+        List<Obstacle> obstacles,
+        List<Checkpoint> checkpoints,
+        double checkpointRadiusM,
+        RechargeStation rechargeStation,
+        Battery battery) {
+
+    /** Default {@code timeStepMs}. */
+    public static final int DEFAULT_TIME_STEP_MS = 32;
+    /** Default {@code maxSimTimeS}. */
+    public static final double DEFAULT_MAX_SIM_TIME_S = 600.0;
+    /** Default {@code seed}. */
+    public static final long DEFAULT_SEED = 0L;
+    /** Default {@code checkpointRadiusM}. */
+    public static final double DEFAULT_CHECKPOINT_RADIUS_M = 0.25;
+
+    /** Copies the lists so that a spec cannot change after construction. */
+    public WorldSpec {
+        Objects.requireNonNull(name, "name");
+        Objects.requireNonNull(arena, "arena");
+        Objects.requireNonNull(robot, "robot");
+        obstacles = List.copyOf(obstacles);
+        checkpoints = List.copyOf(checkpoints);
+        Objects.requireNonNull(rechargeStation, "rechargeStation");
+        Objects.requireNonNull(battery, "battery");
+    }
+
+    /** @return the time step in seconds */
+    public double timeStepS() {
+        return timeStepMs / 1000.0;
+    }
+
+    /** @return a copy of this world with other obstacles (for tests and benchmarks) */
+    public WorldSpec withObstacles(List<Obstacle> newObstacles) {
+        return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, robot, newObstacles, checkpoints,
+                checkpointRadiusM, rechargeStation, battery);
+    }
+
+    /** @return a copy of this world with another robot (for tests and benchmarks) */
+    public WorldSpec withRobot(Robot newRobot) {
+        return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, newRobot, obstacles, checkpoints,
+                checkpointRadiusM, rechargeStation, battery);
+    }
+
+    /** @return a copy of this world with another battery (for tests and benchmarks) */
+    public WorldSpec withBattery(Battery newBattery) {
+        return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, robot, obstacles, checkpoints,
+                checkpointRadiusM, rechargeStation, newBattery);
+    }
+
+    /**
+     * The circular arena, centred on (0, 0) and closed by a wall.
+     *
+     * @param radiusM the radius of the wall's inner face, in metres
+     */
+    public record Arena(double radiusM) {
+    }
+
+    /**
+     * The robot: a disc driven by two wheels.
+     *
+     * @param x            start x, metres
+     * @param y            start y, metres
+     * @param headingDeg   start heading, degrees (0 = +x, counter-clockwise positive)
+     * @param radiusM      body radius, metres (default 0.12)
+     * @param maxSpeedMps  highest wheel speed, metres per second (default 0.5)
+     * @param sensorRangeM range of every distance sensor, metres (default 1.0)
+     */
+    public record Robot(double x, double y, double headingDeg, double radiusM, double maxSpeedMps, double sensorRangeM) {
+        /** Default {@code radiusM}. */
+        public static final double DEFAULT_RADIUS_M = 0.12;
+        /** Default {@code maxSpeedMps}. */
+        public static final double DEFAULT_MAX_SPEED_MPS = 0.5;
+        /** Default {@code sensorRangeM}. */
+        public static final double DEFAULT_SENSOR_RANGE_M = 1.0;
+
+        /** @return the start heading in radians */
+        public double headingRad() {
+            return Math.toRadians(headingDeg);
+        }
+    }
+
+    /**
+     * A static obstacle: a box (width × height, rotated by angleDeg about its centre) or a circle.
+     * Fields that do not apply to the shape are 0.
+     *
+     * @param shape    {@link #BOX} or {@link #CIRCLE}
+     * @param x        centre x, metres
+     * @param y        centre y, metres
+     * @param widthM   box extent along its own x axis, metres (0 for a circle)
+     * @param heightM  box extent along its own y axis, metres (0 for a circle)
+     * @param angleDeg box rotation, degrees counter-clockwise (0 for a circle)
+     * @param radiusM  circle radius, metres (0 for a box)
+     */
+    public record Obstacle(String shape, double x, double y, double widthM, double heightM, double angleDeg,
+                           double radiusM) {
+        /** The {@code shape} of a box. */
+        public static final String BOX = "box";
+        /** The {@code shape} of a circle. */
+        public static final String CIRCLE = "circle";
+
+        /** @return a box obstacle */
+        public static Obstacle box(double x, double y, double widthM, double heightM, double angleDeg) {
+            return new Obstacle(BOX, x, y, widthM, heightM, angleDeg, 0.0);
+        }
+
+        /** @return a circle obstacle */
+        public static Obstacle circle(double x, double y, double radiusM) {
+            return new Obstacle(CIRCLE, x, y, 0.0, 0.0, 0.0, radiusM);
+        }
+
+        /** @return whether this is a box */
+        public boolean isBox() {
+            return BOX.equals(shape);
+        }
+
+        /** @return whether this is a circle */
+        public boolean isCircle() {
+            return CIRCLE.equals(shape);
+        }
+
+        /** @return the box rotation in radians */
+        public double angleRad() {
+            return Math.toRadians(angleDeg);
+        }
+
+        /**
+         * @return the distance in metres from (px, py) to this obstacle's outline, 0 when the point is inside
+         */
+        public double distanceTo(double px, double py) {
+            double dx = px - x;
+            double dy = py - y;
+            if (isCircle()) {
+                return Math.max(0.0, Math.sqrt(dx * dx + dy * dy) - radiusM);
+            }
+            double a = angleRad();
+            double cos = Math.cos(a);
+            double sin = Math.sin(a);
+            // The point in the box's own frame, folded into its first quadrant.
+            double lx = Math.abs(dx * cos + dy * sin) - widthM / 2.0;
+            double ly = Math.abs(-dx * sin + dy * cos) - heightM / 2.0;
+            double ox = Math.max(lx, 0.0);
+            double oy = Math.max(ly, 0.0);
+            return Math.sqrt(ox * ox + oy * oy);
+        }
+    }
+
+    /**
+     * A checkpoint the robot must visit.
+     *
+     * @param x metres
+     * @param y metres
+     */
+    public record Checkpoint(double x, double y) {
+    }
+
+    /**
+     * The recharge station: a disc marker on the floor.
+     *
+     * @param x       centre x, metres
+     * @param y       centre y, metres
+     * @param radiusM radius, metres; the robot is at the station while its centre is within it
+     */
+    public record RechargeStation(double x, double y, double radiusM) {
+    }
+
+    /**
+     * The battery, in percent of full charge.
+     *
+     * @param initial          level at start, percent (0–100; default 100)
+     * @param drainPerMeter    percent lost per metre travelled (default 1.0)
+     * @param rechargeTo       level charging stops at, percent (0–100; default 100)
+     * @param rechargeRatePerS percent gained per second of charging (default 10)
+     */
+    public record Battery(double initial, double drainPerMeter, double rechargeTo, double rechargeRatePerS) {
+        /** The battery used when the file has none. */
+        public static final Battery DEFAULT = new Battery(100.0, 1.0, 100.0, 10.0);
+    }
+}
