@@ -69,7 +69,8 @@ public final class Simulation {
         this.dt = spec.timeStepS();
         this.world = new World<>();
         Settings settings = world.getSettings();
-        settings.setStepFrequency(1.0 / dt);
+        // dyn4j names it a frequency but takes the step period in seconds.
+        settings.setStepFrequency(dt);
         settings.setAtRestDetectionEnabled(false);
         world.setGravity(0.0, 0.0);
 
