@@ -1,0 +1,324 @@
+package org.proactiverobotics.robot;
+
+import com.zaxxer.hikari.HikariDataSource;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import org.proactiverobotics.robot.link.BatteryReading;
+import org.proactiverobotics.robot.link.CommandRecord;
+import org.proactiverobotics.robot.link.DistanceReading;
+import org.proactiverobotics.robot.link.GpsReading;
+import org.proactiverobotics.robot.link.IuReading;
+import org.proactiverobotics.robot.link.JdbcRobotLink;
+import org.proactiverobotics.robot.link.RobotLink;
+import org.proactiverobotics.robot.link.RobotPool;
+import org.proactiverobotics.robot.link.Sensor;
+import org.proactiverobotics.robot.link.SensorAnswer;
+import org.proactiverobotics.robot.link.SensorRequest;
+import org.proactiverobotics.sim2d.DistanceSensor;
+import org.proactiverobotics.sim2d.Simulation;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The paper's {@code ProactiveController}: the robot executes, the engine decides. At start it
+ * seeds the mission rows from the world (once), writes its battery level and waits for
+ * instructions; each control step it answers the engine's pending sensor requests
+ * ({@link #sense()}), then reads the newest command and switches on its {@link Mode} to set the
+ * wheel speeds ({@link #act()}).
+ *
+ * <p>Commands are checked ({@link Command#parse}): a malformed one, or one older than a command
+ * already seen, is logged once and ignored, and the robot keeps its mode. A {@link Watchdog}
+ * in simulated time stops the robot when no new valid command arrived for
+ * {@link RobotConfig#watchdogTimeoutMs()} (engine gone, database down) and lets it go again when
+ * commands come back.
+ */
+public class ProactiveController extends RobotSuperclass {
+
+    private static final Logger LOG = LoggerFactory.getLogger(ProactiveController.class);
+
+    private final int robotId;
+    private final Watchdog watchdog;
+    private final Set<String> unknownSensorsLogged = new HashSet<>();
+    private Mode mode = Mode.WAITING;
+    private Command current = Command.STOP;
+    private long lastSeenCommandId = -1;
+    private long lastExecutedCommandId = -1;
+    private long lastStaleCommandLogged = -1;
+    private long lastUnknownRequestCounted = -1;
+    private boolean watchdogStopped;
+    private boolean rechargeRefusalLogged;
+    private boolean seeded;
+    private boolean startBatteryWritten;
+    private long senseCalls;
+
+    /**
+     * A controller over a link someone else owns (the app's pool, an in-process link...).
+     *
+     * @param simulation the simulation whose robot this controls
+     * @param link       the channel to the engine (closed with this controller)
+     * @param config     the configuration
+     */
+    public ProactiveController(Simulation simulation, RobotLink link, RobotConfig config) {
+        this(simulation, link, config, null);
+    }
+
+    private ProactiveController(Simulation simulation, RobotLink link, RobotConfig config, AutoCloseable owned) {
+        super(simulation, link, config, owned);
+        this.robotId = config.robotId();
+        this.watchdog = new Watchdog(config.watchdogTimeoutMs());
+    }
+
+    /**
+     * A controller with a pool of its own ({@link RobotPool}: short connection time-out) over a
+     * JDBC database; the pool is closed with the controller. Nothing is connected yet: the
+     * database may come up later.
+     *
+     * @param simulation the simulation whose robot this controls
+     * @param jdbcUrl    the database's JDBC URL
+     * @param user       the user, or null to take it from the URL
+     * @param password   the password, or null
+     * @param config     the configuration
+     * @return the controller; close it when done
+     */
+    public static ProactiveController connect(Simulation simulation, String jdbcUrl, String user, String password,
+                                              RobotConfig config) {
+        HikariDataSource pool = RobotPool.open(jdbcUrl, user, password);
+        return new ProactiveController(simulation, new JdbcRobotLink(pool), config, pool);
+    }
+
+    /** @return the current mode */
+    public Mode mode() {
+        return mode;
+    }
+
+    /** @return the command being executed ({@link Command#STOP} while waiting or stopped by the watchdog) */
+    public Command currentCommand() {
+        return current;
+    }
+
+    /** @return the id of the last command executed, or -1 */
+    public long lastExecutedCommandId() {
+        return lastExecutedCommandId;
+    }
+
+    /** @return whether the watchdog has stopped the robot and no new command came since */
+    public boolean stoppedByWatchdog() {
+        return watchdogStopped;
+    }
+
+    /** @return whether the start-up writes (mission rows, first battery level) are done */
+    public boolean started() {
+        return seeded && startBatteryWritten;
+    }
+
+    @Override
+    public void sense() {
+        long now = simTimeMs();
+        startIfNeeded(now);
+        int every = config.retention().everySteps();
+        if (config.retention().prunes() && ++senseCalls % every == 0) {
+            Integer pruned = call("pruning history", 0, l -> l.prune(robotId, config.retention()));
+            if (pruned != null) {
+                stats.rowsPruned += pruned;
+            }
+        }
+        List<SensorRequest> pending = call("reading sensor_requests", 0, l -> l.pendingRequests(robotId));
+        if (pending == null || pending.isEmpty()) {
+            return;
+        }
+        boolean gps = false;
+        boolean iu = false;
+        boolean ds = false;
+        boolean battery = false;
+        long[] ids = new long[pending.size()];
+        int answered = 0;
+        for (SensorRequest r : pending) {
+            Optional<Sensor> sensor = Sensor.byName(r.sensor());
+            if (sensor.isEmpty()) {
+                unknownRequest(r);
+                continue;
+            }
+            switch (sensor.get()) {
+                case GPS -> gps = true;
+                case IU -> iu = true;
+                case DS -> ds = true;
+                case BATTERY -> battery = true;
+                default -> throw new AssertionError(sensor.get());
+            }
+            ids[answered++] = r.id();
+        }
+        if (answered == 0) {
+            return;
+        }
+        SensorAnswer answer = new SensorAnswer(now, gps ? readGps() : null, iu ? readIu() : null,
+                ds ? readDistances() : List.of(), battery ? readBattery() : null,
+                answered == ids.length ? ids : java.util.Arrays.copyOf(ids, answered));
+        int readings = answer.readingCount();
+        Boolean ok = call("writing " + readings + " reading(s)", readings, l -> {
+            l.answer(robotId, answer);
+            return Boolean.TRUE;
+        });
+        if (ok != null) {
+            stats.requestsAnswered += answered;
+            stats.readingsWritten += readings;
+        }
+    }
+
+    @Override
+    public void act() {
+        long now = simTimeMs();
+        Optional<CommandRecord> newest = call("reading engine_comments", 0, l -> l.newestCommand(robotId));
+        if (newest != null && newest.isPresent()) {
+            consider(newest.get(), now);
+        }
+        if (!watchdogStopped && watchdog.expired(now)) {
+            watchdogStopped = true;
+            stats.watchdogStops++;
+            LOG.warn("robot {}: no new command for {} ms of simulated time (engine gone or database down): stopping",
+                    robotId, watchdog.sinceLastFeedMs(now));
+            switchTo(Command.STOP);
+        }
+        applyMode();
+    }
+
+    /** Sets the wheels from the mode: the paper's switch. */
+    private void applyMode() {
+        switch (mode) {
+            case WAITING, STOP, RECHARGE -> robot.setWheelSpeeds(0.0, 0.0);
+            case DRIVE, FORWARD, TURN_LEFT, TURN_RIGHT -> robot.setWheelSpeeds(current.leftMps(), current.rightMps());
+            default -> throw new AssertionError(mode);
+        }
+    }
+
+    private void consider(CommandRecord record, long now) {
+        if (record.id() == lastSeenCommandId) {
+            return; // nothing new
+        }
+        if (record.id() < lastSeenCommandId) {
+            if (record.id() != lastStaleCommandLogged) {
+                lastStaleCommandLogged = record.id();
+                stats.commandsIgnored++;
+                LOG.warn("robot {}: ignoring command id {} ('{}'): older than command id {} already seen",
+                        robotId, record.id(), record.command(), lastSeenCommandId);
+            }
+            return;
+        }
+        lastSeenCommandId = record.id();
+        Command command;
+        try {
+            command = Command.parse(record.command(), robot.maxSpeedMps());
+        } catch (MalformedCommandException e) {
+            stats.commandsIgnored++;
+            LOG.warn("robot {}: ignoring command id {} from {}: {}; keeping mode {}", robotId, record.id(),
+                    record.scenario(), e.getMessage(), mode);
+            return;
+        }
+        watchdog.feed(now);
+        if (watchdogStopped) {
+            watchdogStopped = false;
+            LOG.info("robot {}: commands are back (id {}, '{}'): resuming", robotId, record.id(), record.command());
+        }
+        lastExecutedCommandId = record.id();
+        stats.commandsExecuted++;
+        switchTo(command);
+    }
+
+    private void switchTo(Command command) {
+        Mode previous = mode;
+        if (previous == Mode.RECHARGE && command.mode() != Mode.RECHARGE) {
+            robot.battery().stopCharging();
+        }
+        if (command.mode() != Mode.RECHARGE) {
+            rechargeRefusalLogged = false;
+        }
+        mode = command.mode();
+        current = command;
+        if (mode == Mode.RECHARGE) {
+            recharge();
+        }
+        if (previous != mode) {
+            LOG.debug("robot {}: mode {} -> {}", robotId, previous, mode);
+        }
+    }
+
+    /** Starts charging when at the station and not charging yet; says once why not otherwise. */
+    private void recharge() {
+        var battery = robot.battery();
+        if (battery.isCharging()) {
+            return;
+        }
+        if (battery.startCharging()) {
+            LOG.info("robot {}: charging from {}%", robotId, String.format("%.1f", battery.getLevelPct()));
+            rechargeRefusalLogged = false;
+        } else if (!rechargeRefusalLogged) {
+            rechargeRefusalLogged = true;
+            LOG.warn("robot {}: RECHARGE but not charging ({}); standing still", robotId,
+                    battery.isAtStation() ? "already at the recharge level" : "not at the recharge station");
+        }
+    }
+
+    private void startIfNeeded(long now) {
+        if (!seeded) {
+            if (!config.seedMission()) {
+                seeded = true;
+            } else {
+                Boolean wrote = call("seeding the mission", 0, l -> l.seedMission(robotId, Missions.of(simulation.spec())));
+                if (wrote != null) {
+                    seeded = true;
+                    LOG.info("robot {}: mission rows {}", robotId, wrote ? "seeded from world '" + simulation.spec().name() + "'"
+                            : "already in the database; left as they are");
+                }
+            }
+        }
+        if (!startBatteryWritten) {
+            BatteryReading reading = readBattery();
+            if (call("writing the start battery level", 0, l -> {
+                l.writeBattery(robotId, now, reading);
+                return Boolean.TRUE;
+            }) != null) {
+                startBatteryWritten = true;
+                stats.readingsWritten++;
+                LOG.info("robot {}: battery {}% written; waiting for instructions", robotId,
+                        String.format("%.1f", reading.levelPct()));
+            }
+        }
+    }
+
+    private void unknownRequest(SensorRequest r) {
+        if (r.id() > lastUnknownRequestCounted) {
+            lastUnknownRequestCounted = r.id();
+            stats.unknownRequests++;
+        }
+        if (unknownSensorsLogged.add(String.valueOf(r.sensor()))) {
+            LOG.warn("robot {}: request id {} asks for unknown sensor '{}'; left unanswered (known: GPS, IU, DS, BATTERY)",
+                    robotId, r.id(), r.sensor());
+        }
+    }
+
+    private GpsReading readGps() {
+        double[] v = robot.gps().getValues();
+        return new GpsReading(v[0], v[1]);
+    }
+
+    private IuReading readIu() {
+        double[] v = robot.inertialUnit().getRollPitchYaw();
+        return new IuReading(v[0], v[1], v[2]);
+    }
+
+    private List<DistanceReading> readDistances() {
+        List<DistanceSensor> sensors = robot.distanceSensors();
+        List<DistanceReading> out = new ArrayList<>(sensors.size());
+        for (DistanceSensor s : sensors) {
+            out.add(new DistanceReading(s.getIndex(), s.getAngleRad(), s.getValue(), s.getRangeM()));
+        }
+        return out;
+    }
+
+    private BatteryReading readBattery() {
+        var battery = robot.battery();
+        return new BatteryReading(battery.getLevelPct(), battery.isCharging());
+    }
+}

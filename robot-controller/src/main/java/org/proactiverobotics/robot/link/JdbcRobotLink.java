@@ -1,0 +1,305 @@
+package org.proactiverobotics.robot.link;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import javax.sql.DataSource;
+
+/**
+ * {@link RobotLink} over JDBC and the tables of {@code schema.sql}; the same SQL runs on H2
+ * (MODE=MySQL) and MySQL 8 / MariaDB. Each call borrows one connection from the pool it was
+ * given (keep that pool's connection time-out short on the robot: see {@link RobotPool}) and
+ * gives it back; an answer is one transaction, its distance rows one batch.
+ */
+public final class JdbcRobotLink implements RobotLink {
+
+    private static final String PENDING =
+            "SELECT id, sensor FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL ORDER BY id";
+    private static final String INSERT_GPS =
+            "INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (?, ?, ?, ?)";
+    private static final String INSERT_IU =
+            "INSERT INTO iudata (robot_id, sim_time_ms, roll_rad, pitch_rad, yaw_rad) VALUES (?, ?, ?, ?, ?)";
+    private static final String INSERT_DS = "INSERT INTO distance_sensor_data "
+            + "(robot_id, sim_time_ms, sensor_index, angle_rad, distance_m, range_m) VALUES (?, ?, ?, ?, ?, ?)";
+    private static final String INSERT_BATTERY =
+            "INSERT INTO battery_level (robot_id, sim_time_ms, level_pct, charging) VALUES (?, ?, ?, ?)";
+    private static final String MARK_ANSWERED = "UPDATE sensor_requests SET answered_sim_time_ms = ? "
+            + "WHERE id = ? AND robot_id = ? AND answered_sim_time_ms IS NULL";
+    private static final String NEWEST_COMMAND = "SELECT id, iteration, sim_time_ms, scenario, command "
+            + "FROM engine_comments WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
+
+    private final DataSource dataSource;
+    private final int queryTimeoutS;
+
+    /**
+     * @param dataSource    the database (not closed by this link)
+     * @param queryTimeoutS the longest any one statement may run, seconds (at least 1), so that a
+     *                      hung server cannot freeze the control loop
+     */
+    public JdbcRobotLink(DataSource dataSource, int queryTimeoutS) {
+        this.dataSource = Objects.requireNonNull(dataSource, "dataSource");
+        if (queryTimeoutS < 1) {
+            throw new IllegalArgumentException("queryTimeoutS must be >= 1: " + queryTimeoutS);
+        }
+        this.queryTimeoutS = queryTimeoutS;
+    }
+
+    /** @param dataSource the database (not closed by this link); statements time out after 2 s */
+    public JdbcRobotLink(DataSource dataSource) {
+        this(dataSource, 2);
+    }
+
+    @Override
+    public List<SensorRequest> pendingRequests(int robotId) throws LinkException {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = prepare(c, PENDING)) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                List<SensorRequest> out = new ArrayList<>(4);
+                while (rs.next()) {
+                    out.add(new SensorRequest(rs.getLong(1), rs.getString(2)));
+                }
+                return out;
+            }
+        } catch (SQLException e) {
+            throw failure("reading sensor_requests", e);
+        }
+    }
+
+    @Override
+    public void answer(int robotId, SensorAnswer answer) throws LinkException {
+        try (Connection c = dataSource.getConnection()) {
+            c.setAutoCommit(false);
+            try {
+                long t = answer.simTimeMs();
+                if (answer.gps() != null) {
+                    try (PreparedStatement ps = prepare(c, INSERT_GPS)) {
+                        ps.setInt(1, robotId);
+                        ps.setLong(2, t);
+                        ps.setDouble(3, answer.gps().xM());
+                        ps.setDouble(4, answer.gps().yM());
+                        ps.executeUpdate();
+                    }
+                }
+                if (answer.iu() != null) {
+                    try (PreparedStatement ps = prepare(c, INSERT_IU)) {
+                        ps.setInt(1, robotId);
+                        ps.setLong(2, t);
+                        ps.setDouble(3, answer.iu().rollRad());
+                        ps.setDouble(4, answer.iu().pitchRad());
+                        ps.setDouble(5, answer.iu().yawRad());
+                        ps.executeUpdate();
+                    }
+                }
+                if (!answer.distances().isEmpty()) {
+                    try (PreparedStatement ps = prepare(c, INSERT_DS)) {
+                        for (DistanceReading d : answer.distances()) {
+                            ps.setInt(1, robotId);
+                            ps.setLong(2, t);
+                            ps.setInt(3, d.sensorIndex());
+                            ps.setDouble(4, d.angleRad());
+                            ps.setDouble(5, d.distanceM());
+                            ps.setDouble(6, d.rangeM());
+                            ps.addBatch();
+                        }
+                        ps.executeBatch();
+                    }
+                }
+                if (answer.battery() != null) {
+                    try (PreparedStatement ps = prepare(c, INSERT_BATTERY)) {
+                        bindBattery(ps, robotId, t, answer.battery());
+                        ps.executeUpdate();
+                    }
+                }
+                if (answer.requestIds().length > 0) {
+                    try (PreparedStatement ps = prepare(c, MARK_ANSWERED)) {
+                        for (long id : answer.requestIds()) {
+                            ps.setLong(1, t);
+                            ps.setLong(2, id);
+                            ps.setInt(3, robotId);
+                            ps.addBatch();
+                        }
+                        ps.executeBatch();
+                    }
+                }
+                c.commit();
+            } catch (SQLException | RuntimeException e) {
+                rollbackQuietly(c, e);
+                throw e;
+            }
+        } catch (SQLException e) {
+            throw failure("writing " + answer.readingCount() + " reading(s)", e);
+        }
+    }
+
+    @Override
+    public void writeBattery(int robotId, long simTimeMs, BatteryReading reading) throws LinkException {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = prepare(c, INSERT_BATTERY)) {
+            bindBattery(ps, robotId, simTimeMs, reading);
+            ps.executeUpdate();
+        } catch (SQLException e) {
+            throw failure("writing battery_level", e);
+        }
+    }
+
+    @Override
+    public Optional<CommandRecord> newestCommand(int robotId) throws LinkException {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = prepare(c, NEWEST_COMMAND)) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                if (!rs.next()) {
+                    return Optional.empty();
+                }
+                return Optional.of(new CommandRecord(rs.getLong(1), rs.getLong(2), rs.getLong(3), rs.getString(4),
+                        rs.getString(5)));
+            }
+        } catch (SQLException e) {
+            throw failure("reading engine_comments", e);
+        }
+    }
+
+    @Override
+    public boolean seedMission(int robotId, MissionSpec mission) throws LinkException {
+        try (Connection c = dataSource.getConnection()) {
+            c.setAutoCommit(false);
+            try {
+                boolean wrote = false;
+                if (count(c, "checkpoints", robotId) == 0) {
+                    try (PreparedStatement ps = prepare(c,
+                            "INSERT INTO checkpoints (robot_id, seq, x_m, y_m, radius_m, reached) VALUES (?, ?, ?, ?, ?, ?)")) {
+                        int seq = 0;
+                        for (MissionSpec.Checkpoint cp : mission.checkpoints()) {
+                            ps.setInt(1, robotId);
+                            ps.setInt(2, seq++);
+                            ps.setDouble(3, cp.xM());
+                            ps.setDouble(4, cp.yM());
+                            ps.setDouble(5, cp.radiusM());
+                            ps.setBoolean(6, false);
+                            ps.addBatch();
+                        }
+                        ps.executeBatch();
+                    }
+                    wrote = true;
+                }
+                if (count(c, "recharge_station", robotId) == 0) {
+                    try (PreparedStatement ps = prepare(c,
+                            "INSERT INTO recharge_station (robot_id, x_m, y_m, radius_m) VALUES (?, ?, ?, ?)")) {
+                        ps.setInt(1, robotId);
+                        ps.setDouble(2, mission.station().xM());
+                        ps.setDouble(3, mission.station().yM());
+                        ps.setDouble(4, mission.station().radiusM());
+                        ps.executeUpdate();
+                    }
+                    wrote = true;
+                }
+                if (count(c, "battery_recharged", robotId) == 0) {
+                    try (PreparedStatement ps = prepare(c,
+                            "INSERT INTO battery_recharged (robot_id, level_pct) VALUES (?, ?)")) {
+                        ps.setInt(1, robotId);
+                        ps.setDouble(2, mission.rechargeToPct());
+                        ps.executeUpdate();
+                    }
+                    wrote = true;
+                }
+                c.commit();
+                return wrote;
+            } catch (SQLException | RuntimeException e) {
+                rollbackQuietly(c, e);
+                throw e;
+            }
+        } catch (SQLException e) {
+            throw failure("seeding the mission rows", e);
+        }
+    }
+
+    @Override
+    public int prune(int robotId, RetentionPolicy policy) throws LinkException {
+        if (!policy.prunes()) {
+            return 0;
+        }
+        int keep = policy.keepReadings();
+        int deleted = 0;
+        try (Connection c = dataSource.getConnection()) {
+            for (String table : new String[] {"gps_stored_values", "iudata", "battery_level"}) {
+                deleted += pruneBy(c, robotId,
+                        "SELECT id FROM " + table + " WHERE robot_id = ? ORDER BY id DESC LIMIT 1 OFFSET " + keep,
+                        "DELETE FROM " + table + " WHERE robot_id = ? AND id <= ?");
+            }
+            // One distance reading = the rows sharing a sim_time_ms; served by idx_ds_newest.
+            deleted += pruneBy(c, robotId,
+                    "SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ? GROUP BY sim_time_ms "
+                            + "ORDER BY sim_time_ms DESC LIMIT 1 OFFSET " + keep,
+                    "DELETE FROM distance_sensor_data WHERE robot_id = ? AND sim_time_ms <= ?");
+            deleted += pruneBy(c, robotId,
+                    "SELECT id FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL "
+                            + "ORDER BY id DESC LIMIT 1 OFFSET " + keep,
+                    "DELETE FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL AND id <= ?");
+            return deleted;
+        } catch (SQLException e) {
+            throw failure("pruning reading history", e);
+        }
+    }
+
+    @Override
+    public void close() {
+        // Nothing held between calls; the pool belongs to whoever gave it.
+    }
+
+    private int pruneBy(Connection c, int robotId, String findCutoff, String delete) throws SQLException {
+        long cutoff;
+        try (PreparedStatement ps = prepare(c, findCutoff)) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                if (!rs.next()) {
+                    return 0;
+                }
+                cutoff = rs.getLong(1);
+            }
+        }
+        try (PreparedStatement ps = prepare(c, delete)) {
+            ps.setInt(1, robotId);
+            ps.setLong(2, cutoff);
+            return ps.executeUpdate();
+        }
+    }
+
+    private long count(Connection c, String table, int robotId) throws SQLException {
+        try (PreparedStatement ps = prepare(c, "SELECT COUNT(*) FROM " + table + " WHERE robot_id = ?")) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                rs.next();
+                return rs.getLong(1);
+            }
+        }
+    }
+
+    private PreparedStatement prepare(Connection c, String sql) throws SQLException {
+        PreparedStatement ps = c.prepareStatement(sql);
+        ps.setQueryTimeout(queryTimeoutS);
+        return ps;
+    }
+
+    private static void bindBattery(PreparedStatement ps, int robotId, long simTimeMs, BatteryReading reading)
+            throws SQLException {
+        ps.setInt(1, robotId);
+        ps.setLong(2, simTimeMs);
+        ps.setDouble(3, reading.levelPct());
+        ps.setBoolean(4, reading.charging());
+    }
+
+    private static void rollbackQuietly(Connection c, Exception cause) {
+        try {
+            c.rollback();
+        } catch (SQLException rollback) {
+            cause.addSuppressed(rollback);
+        }
+    }
+
+    private static LinkException failure(String what, SQLException e) {
+        return new LinkException(what + " failed: " + e.getMessage(), e);
+    }
+}

@@ -1,0 +1,153 @@
+package org.proactiverobotics.robot.link;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import org.proactiverobotics.db.DatabaseKind;
+import org.proactiverobotics.db.TestDatabase;
+import org.proactiverobotics.db.TestDatabases;
+
+class JdbcRobotLinkTest {
+
+    private static final MissionSpec MISSION = new MissionSpec(
+            List.of(new MissionSpec.Checkpoint(0, 3, 0.25), new MissionSpec.Checkpoint(3, -1, 0.25)),
+            new MissionSpec.Station(-3, 0, 0.35), 90.0);
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void answersPendingRequestsOfItsOwnRobotAtomically(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
+            db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', 1)");
+            db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (2, 'GPS', 1)");
+            db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'DS', 1)");
+            db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration, answered_sim_time_ms) VALUES (1, 'IU', 1, 0)");
+
+            List<SensorRequest> pending = link.pendingRequests(1);
+            assertThat(pending).extracting(SensorRequest::sensor).containsExactly("GPS", "DS");
+
+            List<DistanceReading> ds = new ArrayList<>();
+            for (int i = 0; i < 8; i++) {
+                ds.add(new DistanceReading(i, i * 0.1, 0.5 + i, 1.0));
+            }
+            link.answer(1, new SensorAnswer(64, new GpsReading(1.5, -2.5), null, ds, null,
+                    pending.stream().mapToLong(SensorRequest::id).toArray()));
+
+            assertThat(link.pendingRequests(1)).isEmpty();
+            assertThat(link.pendingRequests(2)).hasSize(1);
+            assertThat(db.count("gps_stored_values")).isEqualTo(1);
+            assertThat(db.count("distance_sensor_data")).isEqualTo(8);
+            assertThat(db.count("iudata")).isZero();
+            assertThat(one(db, "SELECT x_m, y_m, sim_time_ms FROM gps_stored_values WHERE robot_id = 1"))
+                    .containsExactly(1.5, -2.5, 64L);
+            assertThat(one(db, "SELECT COUNT(*) FROM sensor_requests WHERE robot_id = 1 AND answered_sim_time_ms = 64"))
+                    .containsExactly(2L);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void aFailedAnswerWritesNothing(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
+            db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', 1)");
+            long id = link.pendingRequests(1).get(0).id();
+            db.execute("DROP TABLE battery_level"); // the battery insert fails after the GPS insert
+            try {
+                link.answer(1, new SensorAnswer(64, new GpsReading(1, 2), null, List.of(), new BatteryReading(50, false),
+                        new long[] {id}));
+                throw new AssertionError("expected a LinkException");
+            } catch (LinkException expected) {
+                assertThat(expected).hasMessageContaining("reading");
+            }
+            assertThat(db.count("gps_stored_values")).isZero();
+            assertThat(link.pendingRequests(1)).hasSize(1);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void newestCommandIsTheOneWithTheLargestIdForThisRobot(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
+            assertThat(link.newestCommand(1)).isEmpty();
+            db.execute("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 1, 32, 'A', 'STOP')");
+            db.execute("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 2, 64, 'B', 'FORWARD 0.3')");
+            db.execute("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (2, 9, 96, 'C', 'DRIVE 0 0')");
+            CommandRecord newest = link.newestCommand(1).orElseThrow();
+            assertThat(newest.command()).isEqualTo("FORWARD 0.3");
+            assertThat(newest.iteration()).isEqualTo(2);
+            assertThat(newest.simTimeMs()).isEqualTo(64);
+            assertThat(newest.scenario()).isEqualTo("B");
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void seedingTwiceWritesTheMissionOnce(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
+            assertThat(link.seedMission(1, MISSION)).isTrue();
+            assertThat(link.seedMission(1, MISSION)).isFalse();
+            assertThat(link.seedMission(2, MISSION)).isTrue();
+            assertThat(db.count("checkpoints")).isEqualTo(4);
+            assertThat(db.count("recharge_station")).isEqualTo(2);
+            assertThat(db.count("battery_recharged")).isEqualTo(2);
+            assertThat(one(db, "SELECT seq, x_m, y_m, radius_m, reached FROM checkpoints WHERE robot_id = 1 ORDER BY seq DESC LIMIT 1"))
+                    .containsExactly(1, 3.0, -1.0, 0.25, false);
+            assertThat(one(db, "SELECT level_pct FROM battery_recharged WHERE robot_id = 1")).containsExactly(90.0);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void pruningKeepsTheNewestReadingsOfThisRobotOnly(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
+            List<DistanceReading> ds = List.of(new DistanceReading(0, 0, 0.3, 1), new DistanceReading(1, 1, 0.4, 1));
+            for (int step = 0; step < 30; step++) {
+                for (int robot = 1; robot <= 2; robot++) {
+                    db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (" + robot + ", 'GPS', " + step + ")");
+                    long[] ids = link.pendingRequests(robot).stream().mapToLong(SensorRequest::id).toArray();
+                    link.answer(robot, new SensorAnswer(step * 32L, new GpsReading(step, 0), new IuReading(0, 0, step), ds,
+                            new BatteryReading(100 - step, false), ids));
+                }
+            }
+            db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'IU', 99)");
+            int deleted = link.prune(1, new RetentionPolicy(5, 1));
+            assertThat(deleted).isEqualTo(25 * 3 + 25 * 2 + 25);
+            for (String table : List.of("gps_stored_values", "iudata", "battery_level")) {
+                assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms) FROM " + table + " WHERE robot_id = 1"))
+                        .as(table).containsExactly(5L, 25 * 32L);
+                assertThat(one(db, "SELECT COUNT(*) FROM " + table + " WHERE robot_id = 2")).containsExactly(30L);
+            }
+            assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms) FROM distance_sensor_data WHERE robot_id = 1"))
+                    .containsExactly(10L, 25 * 32L);
+            assertThat(one(db, "SELECT COUNT(*) FROM sensor_requests WHERE robot_id = 1 AND answered_sim_time_ms IS NOT NULL"))
+                    .containsExactly(5L);
+            assertThat(link.pendingRequests(1)).hasSize(1); // pending requests are never pruned
+            assertThat(link.prune(1, new RetentionPolicy(5, 1))).isZero();
+        }
+    }
+
+    /** The first row of a query, numbers normalised (Long for integers, Double, Boolean). */
+    static List<Object> one(TestDatabase db, String sql) throws SQLException {
+        try (Connection c = db.dataSource().getConnection(); PreparedStatement ps = c.prepareStatement(sql);
+             ResultSet rs = ps.executeQuery()) {
+            assertThat(rs.next()).as(sql).isTrue();
+            List<Object> row = new ArrayList<>();
+            for (int i = 1; i <= rs.getMetaData().getColumnCount(); i++) {
+                Object o = rs.getObject(i);
+                if (o instanceof Long || o instanceof java.math.BigInteger || o instanceof java.math.BigDecimal) {
+                    o = ((Number) o).longValue();
+                } else if (o instanceof Float f) {
+                    o = f.doubleValue();
+                }
+                row.add(o);
+            }
+            return row;
+        }
+    }
+}
