@@ -1,0 +1,233 @@
+package org.proactiverobotics.engine;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import javax.sql.DataSource;
+
+/**
+ * Saves the engine state through JDBC in the tables {@code engine_state}, {@code engine_queue}
+ * and {@code rule_failures} of schema.sql; the same SQL runs on H2 (MySQL mode), MariaDB and
+ * MySQL 8. Each save is one transaction: the whole nextQueue is rewritten.
+ */
+public final class JdbcStateStore implements StateStore {
+
+    private static final int BATCH = 1_000;
+
+    private final DataSource dataSource;
+    private final StateCodec codec;
+
+    /** @param dataSource the database (a HikariCP pool, typically) */
+    public JdbcStateStore(DataSource dataSource) {
+        this(dataSource, new StateCodec());
+    }
+
+    /** @param dataSource the database @param codec how rules and memory become JSON */
+    public JdbcStateStore(DataSource dataSource, StateCodec codec) {
+        this.dataSource = Objects.requireNonNull(dataSource);
+        this.codec = Objects.requireNonNull(codec);
+    }
+
+    @Override
+    public Optional<SavedState> load(int robotId) {
+        try (Connection c = dataSource.getConnection()) {
+            c.setAutoCommit(false);
+            try {
+                Optional<SavedState> state = load(c, robotId);
+                c.commit();
+                return state;
+            } catch (SQLException | RuntimeException e) {
+                c.rollback();
+                throw e;
+            }
+        } catch (SQLException e) {
+            throw new StateStoreException("could not load the engine state of robot_id=" + robotId + ": " + e.getMessage(), e);
+        }
+    }
+
+    private Optional<SavedState> load(Connection c, int robotId) throws SQLException {
+        long iteration;
+        String memoryJson;
+        try (PreparedStatement ps = c.prepareStatement("SELECT iteration, memory_json FROM engine_state WHERE robot_id = ?")) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                if (!rs.next()) {
+                    long orphans = countQueueRows(c, robotId);
+                    if (orphans > 0) {
+                        throw new CorruptStateException("engine_queue holds " + orphans + " rows for robot_id=" + robotId
+                                + " but engine_state has no row for it: the saved state is incomplete");
+                    }
+                    return Optional.empty();
+                }
+                iteration = rs.getLong(1);
+                memoryJson = rs.getString(2);
+            }
+        }
+        SharedMemory memory;
+        try {
+            memory = codec.memory(memoryJson);
+        } catch (RuntimeException e) {
+            throw new CorruptStateException("engine_state row (robot_id=" + robotId + ", iteration=" + iteration + "): "
+                    + problem(e, "corrupt memory_json"), e);
+        }
+        List<Rule> queue = new ArrayList<>();
+        try (PreparedStatement ps = c.prepareStatement(
+                "SELECT position, rule_type, rule_json FROM engine_queue WHERE robot_id = ? ORDER BY position")) {
+            ps.setInt(1, robotId);
+            ps.setFetchSize(BATCH);
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    int position = rs.getInt(1);
+                    String type = rs.getString(2);
+                    String row = "engine_queue row (robot_id=" + robotId + ", position=" + position + ", rule_type=" + type + ")";
+                    if (position != queue.size()) {
+                        throw new CorruptStateException(row + ": expected position " + queue.size()
+                                + " (positions run 0..n-1 without gaps)");
+                    }
+                    try {
+                        queue.add(codec.rule(type, rs.getString(3)));
+                    } catch (RuntimeException e) {
+                        throw new CorruptStateException(row + ": " + problem(e, "corrupt rule_json"), e);
+                    }
+                }
+            }
+        }
+        List<RuleFailure> failures = new ArrayList<>();
+        try (PreparedStatement ps = c.prepareStatement("SELECT id, rule, scenario, part, message FROM rule_failures"
+                + " WHERE robot_id = ? AND iteration = ? ORDER BY id")) {
+            ps.setInt(1, robotId);
+            ps.setLong(2, iteration);
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    Part part;
+                    try {
+                        part = Part.valueOf(rs.getString(4));
+                    } catch (IllegalArgumentException e) {
+                        throw new CorruptStateException("rule_failures row (id=" + rs.getLong(1) + ", robot_id=" + robotId
+                                + "): unknown part " + rs.getString(4), e);
+                    }
+                    failures.add(new RuleFailure(iteration, rs.getString(2), rs.getString(3), part, rs.getString(5), null));
+                }
+            }
+        }
+        return Optional.of(new SavedState(iteration, List.copyOf(queue), memory, List.copyOf(failures)));
+    }
+
+    private static String problem(RuntimeException e, String fallback) {
+        return e instanceof IllegalArgumentException ? e.getMessage() : fallback + ": " + e;
+    }
+
+    private static long countQueueRows(Connection c, int robotId) throws SQLException {
+        try (PreparedStatement ps = c.prepareStatement("SELECT COUNT(*) FROM engine_queue WHERE robot_id = ?")) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                rs.next();
+                return rs.getLong(1);
+            }
+        }
+    }
+
+    @Override
+    public void save(int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory, List<RuleFailure> failures) {
+        try (Connection c = dataSource.getConnection()) {
+            c.setAutoCommit(false);
+            try {
+                save(c, robotId, iteration, nextQueue, memory, failures);
+                c.commit();
+            } catch (SQLException | RuntimeException e) {
+                c.rollback();
+                throw e;
+            }
+        } catch (SQLException e) {
+            throw new StateStoreException("could not save the engine state of robot_id=" + robotId + " after iteration "
+                    + iteration + ": " + e.getMessage(), e);
+        }
+    }
+
+    private void save(Connection c, int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory,
+                      List<RuleFailure> failures) throws SQLException {
+        String memoryJson = codec.memoryJson(memory);
+        try (PreparedStatement ps = c.prepareStatement(
+                "UPDATE engine_state SET iteration = ?, memory_json = ?, saved_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ?")) {
+            ps.setLong(1, iteration);
+            ps.setString(2, memoryJson);
+            ps.setInt(3, robotId);
+            if (ps.executeUpdate() == 0) {
+                try (PreparedStatement insert = c.prepareStatement(
+                        "INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (?, ?, ?)")) {
+                    insert.setInt(1, robotId);
+                    insert.setLong(2, iteration);
+                    insert.setString(3, memoryJson);
+                    insert.executeUpdate();
+                }
+            }
+        }
+        try (PreparedStatement ps = c.prepareStatement("DELETE FROM engine_queue WHERE robot_id = ?")) {
+            ps.setInt(1, robotId);
+            ps.executeUpdate();
+        }
+        try (PreparedStatement ps = c.prepareStatement(
+                "INSERT INTO engine_queue (robot_id, position, rule_type, rule_json) VALUES (?, ?, ?, ?)")) {
+            int position = 0;
+            for (Rule rule : nextQueue) {
+                ps.setInt(1, robotId);
+                ps.setInt(2, position++);
+                ps.setString(3, codec.ruleType(rule));
+                ps.setString(4, codec.ruleJson(rule));
+                ps.addBatch();
+                if (position % BATCH == 0) {
+                    ps.executeBatch();
+                }
+            }
+            if (position % BATCH != 0) {
+                ps.executeBatch();
+            }
+        }
+        if (!failures.isEmpty()) {
+            try (PreparedStatement ps = c.prepareStatement("INSERT INTO rule_failures"
+                    + " (robot_id, iteration, rule, scenario, part, message) VALUES (?, ?, ?, ?, ?, ?)")) {
+                for (RuleFailure f : failures) {
+                    ps.setInt(1, robotId);
+                    ps.setLong(2, f.iteration());
+                    ps.setString(3, cut(f.rule(), 255));
+                    ps.setString(4, cut(f.scenario(), 64));
+                    ps.setString(5, f.part().name());
+                    ps.setString(6, cut(f.message(), 1000));
+                    ps.addBatch();
+                }
+                ps.executeBatch();
+            }
+        }
+    }
+
+    private static String cut(String s, int max) {
+        return s == null ? "" : s.length() <= max ? s : s.substring(0, max);
+    }
+
+    @Override
+    public void clear(int robotId) {
+        try (Connection c = dataSource.getConnection()) {
+            c.setAutoCommit(false);
+            try {
+                for (String table : new String[] {"engine_queue", "engine_state", "rule_failures"}) {
+                    try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ?")) {
+                        ps.setInt(1, robotId);
+                        ps.executeUpdate();
+                    }
+                }
+                c.commit();
+            } catch (SQLException | RuntimeException e) {
+                c.rollback();
+                throw e;
+            }
+        } catch (SQLException e) {
+            throw new StateStoreException("could not clear the engine state of robot_id=" + robotId + ": " + e.getMessage(), e);
+        }
+    }
+}

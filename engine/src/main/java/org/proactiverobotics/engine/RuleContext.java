@@ -1,0 +1,88 @@
+package org.proactiverobotics.engine;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+
+/**
+ * What a rule's parts see of the engine: the iteration, the shared memory, the failures, the
+ * services, and {@link #generate} to create rules for the next iteration. One per engine,
+ * reused for every rule (so running a rule allocates nothing); valid only during the part it is
+ * given to.
+ */
+public final class RuleContext {
+
+    private final ProactiveEngine engine;
+    private final Map<Class<?>, Object> services;
+
+    RuleContext(ProactiveEngine engine, Map<Class<?>, Object> services) {
+        this.engine = engine;
+        this.services = services;
+    }
+
+    /** @return the number of the iteration running (the first is 1) */
+    public long iteration() {
+        return engine.iteration();
+    }
+
+    /** @return the engine instance id: the {@code robot_id} of the engine's tables */
+    public int robotId() {
+        return engine.robotId();
+    }
+
+    /**
+     * Appends a rule to nextQueue, after those generated before it. {@code generate(this)} is
+     * how a rule clones itself to run again in the next iteration, its state kept. Generate a
+     * given instance at most once per iteration (two entries would share one state).
+     *
+     * @param rule the rule to run in the next iteration
+     */
+    public void generate(Rule rule) {
+        engine.generate(Objects.requireNonNull(rule, "generated rule"));
+    }
+
+    /** @return the memory scenarios share (CommandArray, PriorityArray, named values) */
+    public SharedMemory memory() {
+        return engine.memory();
+    }
+
+    /**
+     * @return the failures of the previous iteration followed by those of this iteration so far,
+     *         oldest first (what a fail-safe scenario reads)
+     */
+    public List<RuleFailure> failures() {
+        List<RuleFailure> previous = engine.previousFailures();
+        List<RuleFailure> current = engine.currentFailures();
+        if (current.isEmpty()) {
+            return previous;
+        }
+        List<RuleFailure> all = new ArrayList<>(previous.size() + current.size());
+        all.addAll(previous);
+        all.addAll(current);
+        return Collections.unmodifiableList(all);
+    }
+
+    /**
+     * A service given to the engine's builder (a DAO, a clock, ...).
+     *
+     * @param type the type it was registered under
+     * @return the service
+     * @throws IllegalStateException naming the registered types when there is none of this type
+     */
+    public <T> T service(Class<T> type) {
+        return findService(type).orElseThrow(() -> new IllegalStateException(
+                "no service of type " + type.getName() + " was given to the engine; registered: "
+                        + services.keySet().stream().map(Class::getName).sorted().toList()));
+    }
+
+    /**
+     * @param type the type it was registered under
+     * @return the service, or empty when none was registered
+     */
+    public <T> Optional<T> findService(Class<T> type) {
+        return Optional.ofNullable(type.cast(services.get(type)));
+    }
+}
