@@ -1,5 +1,6 @@
 package org.proactiverobotics.robot.link;
 
+import com.zaxxer.hikari.HikariDataSource;
 import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
@@ -56,23 +57,23 @@ public final class JdbcRobotLink implements RobotLink {
 
     @Override
     public List<SensorRequest> pendingRequests(int robotId) throws LinkException {
-        try (Connection c = dataSource.getConnection(); PreparedStatement ps = prepare(c, PENDING)) {
-            ps.setInt(1, robotId);
-            try (ResultSet rs = ps.executeQuery()) {
-                List<SensorRequest> out = new ArrayList<>(4);
-                while (rs.next()) {
-                    out.add(new SensorRequest(rs.getLong(1), rs.getString(2)));
+        return withConnection("reading sensor_requests", c -> {
+            try (PreparedStatement ps = prepare(c, PENDING)) {
+                ps.setInt(1, robotId);
+                try (ResultSet rs = ps.executeQuery()) {
+                    List<SensorRequest> out = new ArrayList<>(4);
+                    while (rs.next()) {
+                        out.add(new SensorRequest(rs.getLong(1), rs.getString(2)));
+                    }
+                    return out;
                 }
-                return out;
             }
-        } catch (SQLException e) {
-            throw failure("reading sensor_requests", e);
-        }
+        });
     }
 
     @Override
     public void answer(int robotId, SensorAnswer answer) throws LinkException {
-        try (Connection c = dataSource.getConnection()) {
+        withConnection("writing " + answer.readingCount() + " reading(s)", c -> {
             c.setAutoCommit(false);
             try {
                 long t = answer.simTimeMs();
@@ -127,44 +128,44 @@ public final class JdbcRobotLink implements RobotLink {
                     }
                 }
                 c.commit();
+                return null;
             } catch (SQLException | RuntimeException e) {
                 rollbackQuietly(c, e);
                 throw e;
             }
-        } catch (SQLException e) {
-            throw failure("writing " + answer.readingCount() + " reading(s)", e);
-        }
+        });
     }
 
     @Override
     public void writeBattery(int robotId, long simTimeMs, BatteryReading reading) throws LinkException {
-        try (Connection c = dataSource.getConnection(); PreparedStatement ps = prepare(c, INSERT_BATTERY)) {
-            bindBattery(ps, robotId, simTimeMs, reading);
-            ps.executeUpdate();
-        } catch (SQLException e) {
-            throw failure("writing battery_level", e);
-        }
+        withConnection("writing battery_level", c -> {
+            try (PreparedStatement ps = prepare(c, INSERT_BATTERY)) {
+                bindBattery(ps, robotId, simTimeMs, reading);
+                ps.executeUpdate();
+                return null;
+            }
+        });
     }
 
     @Override
     public Optional<CommandRecord> newestCommand(int robotId) throws LinkException {
-        try (Connection c = dataSource.getConnection(); PreparedStatement ps = prepare(c, NEWEST_COMMAND)) {
-            ps.setInt(1, robotId);
-            try (ResultSet rs = ps.executeQuery()) {
-                if (!rs.next()) {
-                    return Optional.empty();
+        return withConnection("reading engine_comments", c -> {
+            try (PreparedStatement ps = prepare(c, NEWEST_COMMAND)) {
+                ps.setInt(1, robotId);
+                try (ResultSet rs = ps.executeQuery()) {
+                    if (!rs.next()) {
+                        return Optional.<CommandRecord>empty();
+                    }
+                    return Optional.of(new CommandRecord(rs.getLong(1), rs.getLong(2), rs.getLong(3), rs.getString(4),
+                            rs.getString(5)));
                 }
-                return Optional.of(new CommandRecord(rs.getLong(1), rs.getLong(2), rs.getLong(3), rs.getString(4),
-                        rs.getString(5)));
             }
-        } catch (SQLException e) {
-            throw failure("reading engine_comments", e);
-        }
+        });
     }
 
     @Override
     public boolean seedMission(int robotId, MissionSpec mission) throws LinkException {
-        try (Connection c = dataSource.getConnection()) {
+        return withConnection("seeding the mission rows", c -> {
             c.setAutoCommit(false);
             try {
                 boolean wrote = false;
@@ -211,9 +212,7 @@ public final class JdbcRobotLink implements RobotLink {
                 rollbackQuietly(c, e);
                 throw e;
             }
-        } catch (SQLException e) {
-            throw failure("seeding the mission rows", e);
-        }
+        });
     }
 
     @Override
@@ -222,8 +221,8 @@ public final class JdbcRobotLink implements RobotLink {
             return 0;
         }
         int keep = policy.keepReadings();
-        int deleted = 0;
-        try (Connection c = dataSource.getConnection()) {
+        return withConnection("pruning reading history", c -> {
+            int deleted = 0;
             for (String table : new String[] {"gps_stored_values", "iudata", "battery_level"}) {
                 deleted += pruneBy(c, robotId,
                         "SELECT id FROM " + table + " WHERE robot_id = ? ORDER BY id DESC LIMIT 1 OFFSET " + keep,
@@ -239,14 +238,46 @@ public final class JdbcRobotLink implements RobotLink {
                             + "ORDER BY id DESC LIMIT 1 OFFSET " + keep,
                     "DELETE FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL AND id <= ?");
             return deleted;
-        } catch (SQLException e) {
-            throw failure("pruning reading history", e);
-        }
+        });
     }
 
     @Override
     public void close() {
         // Nothing held between calls; the pool belongs to whoever gave it.
+    }
+
+    /**
+     * Runs work on a borrowed connection. A connection that failed is evicted from a Hikari pool
+     * rather than given back: some drivers (H2 over TCP) report a dead connection with an SQL
+     * state Hikari does not know as fatal, and the pool would hand it out again and again.
+     */
+    private <T> T withConnection(String what, SqlWork<T> work) throws LinkException {
+        Connection c;
+        try {
+            c = dataSource.getConnection();
+        } catch (SQLException e) {
+            throw failure(what, e);
+        }
+        try {
+            return work.run(c);
+        } catch (SQLException e) {
+            if (dataSource instanceof HikariDataSource hikari) {
+                hikari.evictConnection(c);
+            }
+            throw failure(what, e);
+        } finally {
+            try {
+                c.close();
+            } catch (SQLException ignored) {
+                // already evicted or broken: nothing more to release
+            }
+        }
+    }
+
+    /** Work on one connection. */
+    @FunctionalInterface
+    private interface SqlWork<T> {
+        T run(Connection c) throws SQLException;
     }
 
     private int pruneBy(Connection c, int robotId, String findCutoff, String delete) throws SQLException {
