@@ -1,0 +1,297 @@
+package org.proactiverobotics.sim2d;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * Draws a world to SVG: arena, obstacles, numbered checkpoints, the recharge station, and optionally the
+ * robot (heading and sensor rays), a trajectory coloured by category (for instance which scenario's command
+ * was driving) and labelled markers (for instance recharge stops).
+ * <p>
+ * World coordinates are metres with +y up; the picture flips y so that it looks as the world does.
+ * Usage: {@code new SvgRenderer(spec).robot(sim).trajectory(points).render()}.
+ */
+public final class SvgRenderer {
+
+    /**
+     * One sample of a path.
+     *
+     * @param x        metres
+     * @param y        metres
+     * @param category what the robot was doing here (a colour per category); null for none
+     */
+    public record TrajectoryPoint(double x, double y, String category) {
+    }
+
+    /**
+     * A labelled point of interest, such as where a recharge happened.
+     *
+     * @param x     metres
+     * @param y     metres
+     * @param label short text drawn beside the marker
+     */
+    public record Marker(double x, double y, String label) {
+    }
+
+    /**
+     * The robot as drawn: pose and, optionally, one ray per distance sensor.
+     *
+     * @param x            metres
+     * @param y            metres
+     * @param headingRad   radians, 0 along +x, counter-clockwise positive
+     * @param rayAnglesRad ray angles relative to the heading, radians (empty for no rays)
+     * @param rayLengthsM  ray lengths from the rim, metres, one per angle
+     * @param rangeM       the sensors' range, metres (a ray shorter than this hit something)
+     */
+    public record RobotPose(double x, double y, double headingRad, double[] rayAnglesRad, double[] rayLengthsM,
+                            double rangeM) {
+        /** Checks that every angle has a length. */
+        public RobotPose {
+            if (rayAnglesRad.length != rayLengthsM.length) {
+                throw new IllegalArgumentException("one ray length per angle");
+            }
+        }
+    }
+
+    private static final String[] PALETTE = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
+            "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+    private static final double MARGIN_M = 0.6;
+    private static final int SIZE_PX = 800;
+
+    private final WorldSpec spec;
+    private final Map<String, String> colours = new LinkedHashMap<>();
+    private final List<TrajectoryPoint> trajectory = new ArrayList<>();
+    private final List<Marker> markers = new ArrayList<>();
+    private RobotPose robot;
+    private String title;
+
+    /** @param spec the world to draw */
+    public SvgRenderer(WorldSpec spec) {
+        this.spec = Objects.requireNonNull(spec);
+    }
+
+    /** Draws the robot at a pose, without rays. */
+    public SvgRenderer robot(double x, double y, double headingRad) {
+        this.robot = new RobotPose(x, y, headingRad, new double[0], new double[0], spec.robot().sensorRangeM());
+        return this;
+    }
+
+    /** Draws the robot at a pose with its sensor rays. */
+    public SvgRenderer robot(RobotPose pose) {
+        this.robot = pose;
+        return this;
+    }
+
+    /** Draws a simulation's robot where it truly is, with the rays its distance sensors read now. */
+    public SvgRenderer robot(Simulation sim) {
+        List<DistanceSensor> sensors = sim.robot().distanceSensors();
+        double[] angles = new double[sensors.size()];
+        double[] lengths = new double[sensors.size()];
+        for (int i = 0; i < angles.length; i++) {
+            angles[i] = sensors.get(i).getAngleRad();
+            lengths[i] = sensors.get(i).getValue();
+        }
+        GroundTruth t = sim.groundTruth();
+        this.robot = new RobotPose(t.x(), t.y(), t.headingRad(), angles, lengths, spec.robot().sensorRangeM());
+        return this;
+    }
+
+    /** Adds a path, drawn in order, coloured by each point's category. */
+    public SvgRenderer trajectory(List<TrajectoryPoint> points) {
+        trajectory.addAll(points);
+        return this;
+    }
+
+    /** Adds a labelled marker. */
+    public SvgRenderer marker(double x, double y, String label) {
+        markers.add(new Marker(x, y, label));
+        return this;
+    }
+
+    /** Fixes a category's colour (any CSS colour); other categories take the palette in order of appearance. */
+    public SvgRenderer colour(String category, String cssColour) {
+        colours.put(category, cssColour);
+        return this;
+    }
+
+    /** Sets a caption drawn at the top left (default: the world's name). */
+    public SvgRenderer title(String caption) {
+        this.title = caption;
+        return this;
+    }
+
+    /** Writes {@link #render()} to a file, UTF-8. */
+    public void write(Path file) throws IOException {
+        Files.writeString(file, render(), StandardCharsets.UTF_8);
+    }
+
+    /** @return the picture as an SVG document */
+    public String render() {
+        double r = spec.arena().radiusM();
+        double half = r + Simulation.WALL_THICKNESS_M + MARGIN_M;
+        StringBuilder sb = new StringBuilder(4096);
+        sb.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+        sb.append(f("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"%s %s %s %s\">\n",
+                SIZE_PX, SIZE_PX, n(-half), n(-half), n(2 * half), n(2 * half)));
+        double font = Math.max(0.18, r / 25);
+        sb.append(f("<style>text{font-family:sans-serif;font-size:%spx}</style>\n", n(font)));
+        sb.append(f("<rect x=\"%s\" y=\"%s\" width=\"%s\" height=\"%s\" fill=\"white\"/>\n",
+                n(-half), n(-half), n(2 * half), n(2 * half)));
+        sb.append(f("<title>%s</title>\n", esc(caption())));
+
+        sb.append(f("<g id=\"arena\"><circle cx=\"0\" cy=\"0\" r=\"%s\" fill=\"#fafafa\" stroke=\"#444\" stroke-width=\"%s\"/></g>\n",
+                n(r + Simulation.WALL_THICKNESS_M / 2), n(Simulation.WALL_THICKNESS_M)));
+        obstacles(sb);
+        station(sb, font);
+        checkpoints(sb, font);
+        trajectory(sb);
+        markers(sb, font);
+        robot(sb);
+        legend(sb, half, font);
+        sb.append("</svg>\n");
+        return sb.toString();
+    }
+
+    private String caption() {
+        return title != null ? title : spec.name();
+    }
+
+    private void obstacles(StringBuilder sb) {
+        sb.append("<g id=\"obstacles\" fill=\"#8a8a8a\" stroke=\"#333\" stroke-width=\"0.02\">\n");
+        for (WorldSpec.Obstacle o : spec.obstacles()) {
+            if (o.isCircle()) {
+                sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\"/>\n", n(o.x()), n(-o.y()), n(o.radiusM())));
+            } else {
+                // SVG angles turn clockwise on screen because y points down.
+                sb.append(f("  <rect x=\"%s\" y=\"%s\" width=\"%s\" height=\"%s\" transform=\"translate(%s %s) rotate(%s)\"/>\n",
+                        n(-o.widthM() / 2), n(-o.heightM() / 2), n(o.widthM()), n(o.heightM()), n(o.x()), n(-o.y()),
+                        n(-o.angleDeg())));
+            }
+        }
+        sb.append("</g>\n");
+    }
+
+    private void station(StringBuilder sb, double font) {
+        WorldSpec.RechargeStation s = spec.rechargeStation();
+        sb.append(f("<g id=\"station\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#c8f0c8\" stroke=\"#2a8a2a\" stroke-width=\"0.03\"/>"
+                        + "<text x=\"%s\" y=\"%s\" text-anchor=\"middle\" fill=\"#2a8a2a\">recharge</text></g>\n",
+                n(s.x()), n(-s.y()), n(s.radiusM()), n(s.x()), n(-s.y() - s.radiusM() - font * 0.4)));
+    }
+
+    private void checkpoints(StringBuilder sb, double font) {
+        sb.append("<g id=\"checkpoints\">\n");
+        List<WorldSpec.Checkpoint> cps = spec.checkpoints();
+        for (int i = 0; i < cps.size(); i++) {
+            WorldSpec.Checkpoint c = cps.get(i);
+            sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#fff3c4\" stroke=\"#c08a00\" stroke-width=\"0.03\" stroke-dasharray=\"0.06 0.04\"/>"
+                            + "<text x=\"%s\" y=\"%s\" text-anchor=\"middle\" dominant-baseline=\"central\" fill=\"#805c00\">%d</text>\n",
+                    n(c.x()), n(-c.y()), n(spec.checkpointRadiusM()), n(c.x()), n(-c.y()), i + 1));
+        }
+        sb.append("</g>\n");
+    }
+
+    private void trajectory(StringBuilder sb) {
+        if (trajectory.isEmpty()) {
+            return;
+        }
+        sb.append("<g id=\"trajectory\" fill=\"none\" stroke-width=\"0.04\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n");
+        int start = 0;
+        for (int i = 1; i <= trajectory.size(); i++) {
+            // One polyline per run of a category; each run starts at the previous run's last point.
+            if (i == trajectory.size() || !Objects.equals(trajectory.get(i).category(), trajectory.get(start).category())) {
+                String category = trajectory.get(start).category();
+                sb.append(f("  <polyline stroke=\"%s\" points=\"", esc(colourOf(category))));
+                for (int k = Math.max(0, start - 1); k < i; k++) {
+                    TrajectoryPoint p = trajectory.get(k);
+                    sb.append(n(p.x())).append(',').append(n(-p.y())).append(' ');
+                }
+                sb.append("\"/>\n");
+                start = i;
+            }
+        }
+        sb.append("</g>\n");
+    }
+
+    private String colourOf(String category) {
+        String key = category == null ? "" : category;
+        return colours.computeIfAbsent(key, k -> PALETTE[colours.size() % PALETTE.length]);
+    }
+
+    private void markers(StringBuilder sb, double font) {
+        if (markers.isEmpty()) {
+            return;
+        }
+        sb.append("<g id=\"markers\">\n");
+        for (Marker m : markers) {
+            sb.append(f("  <path d=\"M %s %s l 0.09 0.09 l -0.09 0.09 l -0.09 -0.09 z\" transform=\"translate(0 -0.09)\" fill=\"#e6007e\"/>"
+                            + "<text x=\"%s\" y=\"%s\" fill=\"#e6007e\">%s</text>\n",
+                    n(m.x()), n(-m.y()), n(m.x() + 0.12), n(-m.y() - 0.1), esc(m.label())));
+        }
+        sb.append("</g>\n");
+    }
+
+    private void robot(StringBuilder sb) {
+        if (robot == null) {
+            return;
+        }
+        double rr = spec.robot().radiusM();
+        double x = robot.x();
+        double y = robot.y();
+        sb.append("<g id=\"robot\">\n");
+        for (int i = 0; i < robot.rayAnglesRad().length; i++) {
+            double a = robot.headingRad() + robot.rayAnglesRad()[i];
+            double len = robot.rayLengthsM()[i];
+            double x0 = x + rr * Math.cos(a);
+            double y0 = y + rr * Math.sin(a);
+            boolean hit = len < robot.rangeM();
+            sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"0.015\"/>\n",
+                    n(x0), n(-y0), n(x0 + len * Math.cos(a)), n(-(y0 + len * Math.sin(a))), hit ? "#e03030" : "#9ab"));
+        }
+        sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#3070d0\" stroke=\"#103060\" stroke-width=\"0.02\"/>\n",
+                n(x), n(-y), n(rr)));
+        sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"white\" stroke-width=\"0.03\"/>\n",
+                n(x), n(-y), n(x + rr * Math.cos(robot.headingRad())), n(-(y + rr * Math.sin(robot.headingRad())))));
+        sb.append("</g>\n");
+    }
+
+    private void legend(StringBuilder sb, double half, double font) {
+        sb.append(f("<text x=\"%s\" y=\"%s\" font-weight=\"bold\">%s</text>\n", n(-half + 0.15), n(-half + font * 1.4),
+                esc(caption())));
+        if (trajectory.isEmpty()) {
+            return;
+        }
+        double y = -half + font * 2.8;
+        for (Map.Entry<String, String> e : colours.entrySet()) {
+            if (trajectory.stream().noneMatch(p -> Objects.equals(p.category() == null ? "" : p.category(), e.getKey()))) {
+                continue;
+            }
+            sb.append(f("<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"0.06\"/>"
+                            + "<text x=\"%s\" y=\"%s\" dominant-baseline=\"central\">%s</text>\n",
+                    n(-half + 0.15), n(y), n(-half + 0.55), n(y), esc(e.getValue()), n(-half + 0.65), n(y),
+                    esc(e.getKey().isEmpty() ? "(none)" : e.getKey())));
+            y += font * 1.3;
+        }
+    }
+
+    private static String f(String format, Object... args) {
+        return String.format(Locale.ROOT, format, args);
+    }
+
+    /** Millimetre precision keeps files small and output stable. */
+    private static String n(double v) {
+        String s = String.format(Locale.ROOT, "%.3f", v);
+        return "-0.000".equals(s) ? "0.000" : s;
+    }
+
+    private static String esc(String s) {
+        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
+    }
+}
