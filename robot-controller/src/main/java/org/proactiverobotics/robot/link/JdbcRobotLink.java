@@ -247,9 +247,10 @@ public final class JdbcRobotLink implements RobotLink {
     }
 
     /**
-     * Runs work on a borrowed connection. A connection that failed is evicted from a Hikari pool
-     * rather than given back: some drivers (H2 over TCP) report a dead connection with an SQL
-     * state Hikari does not know as fatal, and the pool would hand it out again and again.
+     * Runs work on a borrowed connection. After a failure the connections of a Hikari pool are
+     * evicted rather than handed out again: some drivers (H2 over TCP) report a dead connection
+     * with an SQL state Hikari does not know as fatal, and a recently used connection is not
+     * validated, so the pool would hand out the dead one again and again.
      */
     private <T> T withConnection(String what, SqlWork<T> work) throws LinkException {
         Connection c;
@@ -261,15 +262,16 @@ public final class JdbcRobotLink implements RobotLink {
         try {
             return work.run(c);
         } catch (SQLException e) {
-            if (dataSource instanceof HikariDataSource hikari) {
-                hikari.evictConnection(c);
+            if (dataSource instanceof HikariDataSource hikari && hikari.getHikariPoolMXBean() != null) {
+                // idle connections are closed now, this one when it is given back below
+                hikari.getHikariPoolMXBean().softEvictConnections();
             }
             throw failure(what, e);
         } finally {
             try {
                 c.close();
-            } catch (SQLException ignored) {
-                // already evicted or broken: nothing more to release
+            } catch (SQLException | RuntimeException ignored) {
+                // broken: nothing more to release
             }
         }
     }
