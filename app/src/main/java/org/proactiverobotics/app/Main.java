@@ -13,6 +13,7 @@ import picocli.CommandLine.Command;
         description = "Proactive Engine driving a simulated robot through a shared SQL database.",
         subcommands = {
                 CommandLine.HelpCommand.class,
+                ValidateCommand.class,
         })
 public final class Main implements Runnable {
 
