@@ -34,6 +34,8 @@ public final class Simulation {
     static final double WALL_THICKNESS_M = 0.2;
     /** Longest wall segment, metres; the wall is a ring of boxes at least this fine. */
     private static final double WALL_SEGMENT_M = 0.25;
+    /** How far, in metres, the rim must get from a body before touching it again counts as a new collision. */
+    static final double RELEASE_M = 0.02;
 
     private final WorldSpec spec;
     private final SensorNoise noise;
@@ -47,7 +49,7 @@ public final class Simulation {
     private final Ray ray = new Ray(0.0);
     private final double[] distanceCache;
     private final List<Body> touching = new ArrayList<>();
-    private final List<Body> touchingBefore = new ArrayList<>();
+    private final List<Body> engaged = new ArrayList<>();
     private long steps;
     private long sampledStep = -1;
     private double level;
@@ -202,7 +204,7 @@ public final class Simulation {
         }
 
         updateClearance(x, y);
-        countCollisions();
+        countCollisions(x, y);
 
         truth.x = x;
         truth.y = y;
@@ -211,19 +213,31 @@ public final class Simulation {
         truth.minBatteryPct = Math.min(truth.minBatteryPct, level);
     }
 
-    /** Counts, as one collision each, the bodies touching the robot now that did not touch it a step ago. */
-    private void countCollisions() {
-        touchingBefore.clear();
-        touchingBefore.addAll(touching);
+    /**
+     * Counts a collision when a wall or obstacle touches the robot and was not already engaged; a body stays
+     * engaged until the rim is {@value #RELEASE_M} m clear of it, so that the solver's touch-and-release
+     * while the robot pushes, turns or slides against it is one collision, not dozens.
+     */
+    private void countCollisions(double x, double y) {
         touching.clear();
         if (steps > 0) {
             touching.addAll(world.getInContactBodies(robotBody, false));
         }
         for (Body body : touching) {
-            if (!touchingBefore.contains(body)) {
+            if (!engaged.contains(body)) {
+                engaged.add(body);
                 truth.collisions++;
             }
         }
+        engaged.removeIf(body -> !touching.contains(body) && clearanceTo(body, x, y) > RELEASE_M);
+    }
+
+    /** @return the gap between the robot's rim and a wall or obstacle body, metres */
+    private double clearanceTo(Body body, double x, double y) {
+        if (body.getUserData() instanceof WorldSpec.Obstacle o) {
+            return o.distanceTo(x, y) - spec.robot().radiusM();
+        }
+        return wallClearance(x, y);
     }
 
     /** The clearance at the start, against every obstacle (later steps look only nearby). */

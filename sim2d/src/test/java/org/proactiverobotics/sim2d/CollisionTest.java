@@ -59,6 +59,20 @@ class CollisionTest {
     }
 
     @Test
+    void pushingAndTurningAgainstAnObstacleIsOneCollision() {
+        Simulation sim = new Simulation(boxAhead());
+        sim.robot().setWheelSpeeds(0.5, 0.5);
+        Worlds.run(sim, 100);
+        for (int i = 0; i < 20; i++) {
+            sim.robot().setWheelSpeeds(-0.3, 0.3);
+            Worlds.run(sim, 5);
+            sim.robot().setWheelSpeeds(0.5, 0.3);
+            Worlds.run(sim, 5);
+        }
+        assertThat(sim.groundTruth().collisions()).isEqualTo(1);
+    }
+
+    @Test
     void clearanceIsTrackedWithoutContact() {
         Simulation sim = new Simulation(boxAhead());
         assertThat(sim.groundTruth().minClearanceM()).isCloseTo(0.9 - 0.12, within(1e-9));
