@@ -116,6 +116,12 @@ public final class SvgRenderer {
         return this;
     }
 
+    /** Adds labelled markers. */
+    public SvgRenderer markers(List<Marker> list) {
+        markers.addAll(list);
+        return this;
+    }
+
     /** Fixes a category's colour (any CSS colour); other categories take the palette in order of appearance. */
     public SvgRenderer colour(String category, String cssColour) {
         colours.put(category, cssColour);
