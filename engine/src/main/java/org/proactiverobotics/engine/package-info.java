@@ -1,0 +1,35 @@
+/**
+ * The Proactive Engine core: {@link org.proactiverobotics.engine.Rule}, the engine's
+ * {@code currentQueue} and {@code nextQueue}, scenarios and their meta-rules, the shared memory
+ * (CommandArray, PriorityArray) and the saved state.
+ *
+ * <p>A scenario lives in a package of its own and imports only this one:
+ * <pre>{@code
+ * public final class BatteryMonitor extends Rule {          // a rule: fields = saved state
+ *     private double thresholdPct = 20;
+ *     private transient double levelPct;                   // acquired data: not saved
+ *     private BatteryMonitor() { }                         // for Gson
+ *     public String scenario() { return "BatteryMonitor"; }
+ *     protected void acquireGuardData(RuleContext ctx) throws Exception {
+ *         levelPct = ctx.service(BatteryDao.class).newestLevelPct(ctx.robotId());
+ *     }
+ *     protected boolean activationGuards(RuleContext ctx) { return levelPct < thresholdPct; }
+ *     protected void actions(RuleContext ctx) {
+ *         ctx.memory().commandArray().enter(SLOT, "RECHARGE", scenario(), ctx.iteration());
+ *     }
+ *     protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
+ *         ctx.generate(outcome.conditionsHeld() ? new MoveToRecharge() : this);   // clone or hand over
+ *     }
+ * }
+ *
+ * public final class BatteryScenario implements Scenario {  // listed in META-INF/services/org.proactiverobotics.engine.Scenario
+ *     public String name() { return "BatteryMonitor"; }
+ *     public MetaRule metaRule() { return new Meta(); }
+ *     public static final class Meta extends MetaRule {
+ *         public String scenario() { return "BatteryMonitor"; }
+ *         protected void generateScenarioRules(RuleContext ctx) { ctx.generate(new BatteryMonitor()); }
+ *     }
+ * }
+ * }</pre>
+ */
+package org.proactiverobotics.engine;
