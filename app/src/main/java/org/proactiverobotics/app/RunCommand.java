@@ -1,0 +1,176 @@
+package org.proactiverobotics.app;
+
+import com.google.gson.Gson;
+import com.google.gson.GsonBuilder;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.sql.SQLException;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.proactiverobotics.app.mission.Mission;
+import org.proactiverobotics.app.mission.MissionOptions;
+import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.db.Databases;
+import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.sim2d.WorldFiles;
+import org.proactiverobotics.sim2d.WorldSpec;
+import org.proactiverobotics.sim2d.WorldValidationException;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code run}: the headless mission in one process (DESIGN section 7): engine, robot controller
+ * and simulator in lockstep through a database, embedded H2 unless {@code --db} names another.
+ * Writes report.json, trace.jsonl and trajectory.svg. Input is checked before anything is
+ * written: a bad world or option leaves no output directory.
+ */
+@Command(name = "run",
+        mixinStandardHelpOptions = true,
+        description = {"Runs a headless mission: the proactive engine drives the simulated robot through a shared database.",
+                "Writes report.json, trace.jsonl and trajectory.svg to the output directory.",
+                "Exit codes: 0 mission accomplished, 1 mission failed, 2 bad input, 3 infrastructure failure."})
+public final class RunCommand implements Callable<Integer> {
+
+    static final String DEFAULT_WORLD = "reference-arena";
+
+    @Option(names = "--world", paramLabel = "FILE",
+            description = "The world file (JSON). Default: the bundled " + DEFAULT_WORLD + ".")
+    private Path world;
+
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "Output directory. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
+    private Path out;
+
+    @Option(names = "--db", paramLabel = "JDBC_URL",
+            description = "The shared database, e.g. jdbc:mariadb://127.0.0.1:3306/proactive. Default: embedded H2.")
+    private String db;
+
+    @Option(names = "--db-user", paramLabel = "U", description = "Database user.")
+    private String dbUser;
+
+    @Option(names = "--db-password", paramLabel = "P", description = "Database password.")
+    private String dbPassword;
+
+    @Option(names = "--strategy", paramLabel = "NAME", defaultValue = Strategies.SAFETY_FIRST,
+            description = "The strategy (PriorityArray) to start with: ${COMPLETION-CANDIDATES}. Default: ${DEFAULT-VALUE}.",
+            completionCandidates = StrategyNames.class)
+    private String strategy;
+
+    @Option(names = "--quiet", description = "No live progress line.")
+    private boolean quiet;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter stdout = spec.commandLine().getOut();
+        WorldSpec spec;
+        try {
+            spec = world == null ? WorldFiles.bundled(DEFAULT_WORLD) : WorldFiles.load(world);
+        } catch (WorldValidationException e) {
+            err.println((world == null ? DEFAULT_WORLD : world) + ": invalid world file:");
+            e.problems().forEach(err::println);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        if (!Strategies.names().contains(strategy)) {
+            err.println("unknown strategy '" + strategy + "'; known: " + String.join(", ", Strategies.names()));
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        if (db != null && !db.startsWith("jdbc:")) {
+            err.println("--db must be a JDBC URL (jdbc:h2:..., jdbc:mariadb://..., jdbc:mysql://...): " + db);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        Path outDir = out != null ? out : Path.of("runs", spec.name() + "-"
+                + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        String url = db != null ? db : Databases.embeddedH2Url("proactive_run_" + System.nanoTime());
+        MissionOptions options = new MissionOptions(spec, url, db != null ? dbUser : "sa", db != null ? dbPassword : "",
+                strategy, 1);
+        try {
+            Files.createDirectories(outDir);
+        } catch (IOException e) {
+            err.println("cannot create the output directory " + outDir + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        boolean live = !quiet && System.console() != null;
+        stdout.printf(Locale.ROOT, "Mission %s on %s, strategy %s%n", spec.name(),
+                db != null ? db : "embedded H2", strategy);
+        stdout.flush();
+        MissionReport report;
+        try {
+            Mission mission = new Mission(options);
+            if (live) {
+                var progress = new ProgressPrinter(System.out, spec);
+                mission.onStep(progress::update);
+                report = mission.run(outDir);
+                progress.finish();
+            } else {
+                report = mission.run(outDir);
+            }
+            writeReport(report, outDir.resolve("report.json"));
+        } catch (SQLException e) {
+            err.println("database failure (" + url + "): " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        } catch (IOException e) {
+            err.println("cannot write the output in " + outDir + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
+        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.0fx real time), "
+                        + "%.1f m, %d collisions, battery min %.1f %%, %d recharges%n",
+                report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(),
+                report.simTimeS(), report.wallTimeS(), report.realTimeFactor(), report.distanceM(),
+                report.collisions(), report.minBattery(), report.recharges());
+        stdout.println("Report: " + outDir.resolve("report.json"));
+        stdout.flush();
+        return report.success() ? 0 : Main.EXIT_MISSION_FAILED;
+    }
+
+    static void writeReport(MissionReport report, Path file) throws IOException {
+        Gson gson = new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create();
+        Files.writeString(file, gson.toJson(report) + "\n", StandardCharsets.UTF_8);
+    }
+
+    /** The strategy names, for --help. */
+    static final class StrategyNames implements Iterable<String> {
+        @Override
+        public java.util.Iterator<String> iterator() {
+            return Strategies.names().iterator();
+        }
+    }
+
+    /** Adapts the mission's per-step hook to the live progress line. */
+    private static final class ProgressPrinter {
+        private final org.proactiverobotics.app.mission.Progress line;
+        private final long startNs = System.nanoTime();
+        private final int total;
+
+        ProgressPrinter(java.io.PrintStream out, WorldSpec world) {
+            this.line = new org.proactiverobotics.app.mission.Progress(out);
+            this.total = world.checkpoints().size();
+        }
+
+        void update(org.proactiverobotics.sim2d.Simulation sim) {
+            var truth = sim.groundTruth();
+            double wallS = (System.nanoTime() - startNs) / 1e9;
+            line.update(sim.simTimeS(), truth.checkpointsReached(), total, truth.batteryPct(), sim.simTimeS() / Math.max(wallS, 1e-9));
+        }
+
+        void finish() {
+            line.finish();
+        }
+    }
+}

@@ -1,0 +1,227 @@
+package org.proactiverobotics.app.mission;
+
+import com.zaxxer.hikari.HikariDataSource;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.function.Consumer;
+import org.proactiverobotics.db.Databases;
+import org.proactiverobotics.db.Schema;
+import org.proactiverobotics.engine.Algorithm;
+import org.proactiverobotics.engine.CommandArray;
+import org.proactiverobotics.engine.IterationSummary;
+import org.proactiverobotics.engine.JdbcStateStore;
+import org.proactiverobotics.engine.ProactiveEngine;
+import org.proactiverobotics.engine.ScenarioRegistry;
+import org.proactiverobotics.engine.Suggestion;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
+import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.tables.EngineComments;
+import org.proactiverobotics.engine.tables.JdbcRobotTables;
+import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.SensorRequests;
+import org.proactiverobotics.engine.tables.StrategyTable;
+import org.proactiverobotics.robot.ProactiveController;
+import org.proactiverobotics.robot.RobotConfig;
+import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.Simulation;
+import org.proactiverobotics.sim2d.SvgRenderer;
+import org.proactiverobotics.sim2d.WorldSpec;
+
+/**
+ * One headless mission in one process, in lockstep: each control step the robot answers the
+ * engine's sensor requests, the engine runs one iteration, the robot reads the newest command
+ * and sets its wheels, and the world steps. Both sides talk only through the database, each
+ * with a pool of its own, exactly as two processes would. Deterministic: the same world and
+ * seed give the same run.
+ */
+public final class Mission {
+
+    /** The scenarios StartUp creates, in the paper's order 1 → 4 → 2 → 3 → 5. */
+    public static final List<String> SCENARIOS = List.of(
+            "DataAcquisition", "BatteryMonitor", "ReachDestination", "ObstacleAvoidance", "DecisionMaking");
+
+    private final MissionOptions options;
+    private final List<SvgRenderer.TrajectoryPoint> path = new ArrayList<>();
+    private final List<SvgRenderer.Marker> markers = new ArrayList<>();
+    private final Map<String, Long> commandWins = new TreeMap<>();
+    private Consumer<Simulation> stepHook = sim -> { };
+    private TraceWriter trace;
+    private String decidedScenario = "none";
+    private String drivingScenario = "none";
+    private long lastDecisionSimTimeMs;
+
+    /** @param options what to run */
+    public Mission(MissionOptions options) {
+        this.options = options;
+    }
+
+    /**
+     * Called after every control step with the simulation (a progress line, a test that changes
+     * the strategy mid-run, ...).
+     *
+     * @param hook the callback
+     * @return this mission
+     */
+    public Mission onStep(Consumer<Simulation> hook) {
+        this.stepHook = hook;
+        return this;
+    }
+
+    /**
+     * Runs the mission to its end and writes report.json's content (returned), trace.jsonl and
+     * trajectory.svg into the output directory.
+     *
+     * @param outDir where the trace and the picture go (must exist)
+     * @return the report
+     * @throws SQLException when the database cannot be reached or set up
+     * @throws IOException  when the output cannot be written
+     */
+    public MissionReport run(Path outDir) throws SQLException, IOException {
+        WorldSpec world = options.world();
+        int robotId = options.robotId();
+        try (HikariDataSource enginePool = Databases.pool(options.jdbcUrl(), options.user(), options.password())) {
+            Schema.apply(enginePool);
+            clearRobotRows(enginePool, robotId);
+            JdbcRobotTables tables = new JdbcRobotTables(enginePool, robotId);
+            tables.write(Strategies.named(options.strategy()));
+
+            Simulation sim = new Simulation(world);
+            DecisionObserver observer = this::decided;
+            ProactiveEngine engine = ProactiveEngine.builder()
+                    .robotId(robotId)
+                    .algorithm(Algorithm.LAZY)
+                    .store(new JdbcStateStore(enginePool))
+                    .service(SensorReadings.class, tables)
+                    .service(SensorRequests.class, tables)
+                    .service(MissionTables.class, tables)
+                    .service(StrategyTable.class, tables)
+                    .service(EngineComments.class, tables)
+                    .service(DriveProfile.class, new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM()))
+                    .service(DecisionObserver.class, observer)
+                    .build();
+            engine.startFresh(ScenarioRegistry.load().startUp(SCENARIOS));
+
+            try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"));
+                 ProactiveController controller = ProactiveController.connect(sim, options.jdbcUrl(), options.user(),
+                         options.password(), RobotConfig.defaults(robotId))) {
+                this.trace = traceWriter;
+                MissionReport report = loop(sim, engine, controller);
+                writePicture(world, sim, outDir.resolve("trajectory.svg"));
+                return report;
+            }
+        }
+    }
+
+    private MissionReport loop(Simulation sim, ProactiveEngine engine, ProactiveController controller) {
+        WorldSpec world = options.world();
+        GroundTruth truth = sim.groundTruth();
+        long physicsNs = 0;
+        long robotNs = 0;
+        long engineNs = 0;
+        long failures = 0;
+        long steps = 0;
+        int recharges = truth.recharges();
+        Outcome outcome;
+        long start = System.nanoTime();
+        path.add(new SvgRenderer.TrajectoryPoint(truth.x(), truth.y(), drivingScenario));
+        while (true) {
+            long t0 = System.nanoTime();
+            controller.sense();
+            long t1 = System.nanoTime();
+            lastDecisionSimTimeMs = sim.simTimeMs();
+            IterationSummary summary = engine.runIteration();
+            failures += summary.rulesFailed();
+            long t2 = System.nanoTime();
+            controller.act();
+            long t3 = System.nanoTime();
+            sim.step();
+            long t4 = System.nanoTime();
+            robotNs += (t1 - t0) + (t3 - t2);
+            engineNs += t2 - t1;
+            physicsNs += t4 - t3;
+            steps++;
+            path.add(new SvgRenderer.TrajectoryPoint(truth.x(), truth.y(), drivingScenario));
+            if (truth.recharges() > recharges) {
+                recharges = truth.recharges();
+                markers.add(new SvgRenderer.Marker(truth.x(), truth.y(), "recharge " + recharges));
+            }
+            stepHook.accept(sim);
+            if (truth.checkpointsReached() == truth.checkpointsTotal()) {
+                outcome = Outcome.MISSION_ACCOMPLISHED;
+                break;
+            }
+            if (truth.batteryPct() <= 0.0) {
+                outcome = Outcome.BATTERY_DEPLETED;
+                break;
+            }
+            if (sim.timeLimitReached()) {
+                outcome = Outcome.TIME_LIMIT;
+                break;
+            }
+        }
+        double wallS = (System.nanoTime() - start) / 1e9;
+        double simS = sim.simTimeMs() / 1000.0;
+        return new MissionReport(world.name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, options.strategy(),
+                databaseKind(options.jdbcUrl()), truth.checkpointsReached(), truth.checkpointsTotal(), simS,
+                round(wallS, 3), round(simS / Math.max(wallS, 1e-9), 1), steps, engine.iteration(),
+                round(truth.distanceM(), 3), truth.collisions(), round(truth.minClearanceM(), 4),
+                round(truth.minBatteryPct(), 2), round(truth.batteryPct(), 2), truth.recharges(),
+                Map.copyOf(commandWins), failures,
+                new MissionReport.Timing(round(physicsNs / 1e6 / steps, 4), round(robotNs / 1e6 / steps, 4),
+                        round(engineNs / 1e6 / steps, 4)));
+    }
+
+    /** The decision of iteration k is sent in iteration k+1 (SendRobotCommand), executed from step k+1. */
+    private void decided(long iteration, CommandArray suggestions, Suggestion winner) {
+        drivingScenario = decidedScenario;
+        decidedScenario = winner.scenario();
+        commandWins.merge(winner.scenario(), 1L, Long::sum);
+        trace.decision(iteration, lastDecisionSimTimeMs, suggestions, winner);
+    }
+
+    private void writePicture(WorldSpec world, Simulation sim, Path file) throws IOException {
+        SvgRenderer svg = new SvgRenderer(world).robot(sim).trajectory(path)
+                .colour("ReachDestination", "#1f77b4")
+                .colour("ObstacleAvoidance", "#d62728")
+                .colour("BatteryMonitor", "#2ca02c")
+                .colour("DecisionMaking", "#7f7f7f")
+                .colour("none", "#7f7f7f")
+                .title(world.name() + " — path coloured by the scenario whose command was driving");
+        for (SvgRenderer.Marker m : markers) {
+            svg.marker(m.x(), m.y(), m.label());
+        }
+        svg.write(file);
+    }
+
+    /** A mission starts from a clean slate for its robot: earlier rows of the same robot id go. */
+    private static void clearRobotRows(HikariDataSource pool, int robotId) throws SQLException {
+        try (Connection c = pool.getConnection()) {
+            for (String table : Schema.tableNames()) {
+                try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ?")) {
+                    ps.setInt(1, robotId);
+                    ps.executeUpdate();
+                }
+            }
+        }
+    }
+
+    static String databaseKind(String jdbcUrl) {
+        String rest = jdbcUrl.startsWith("jdbc:") ? jdbcUrl.substring(5) : jdbcUrl;
+        int colon = rest.indexOf(':');
+        return colon < 0 ? rest : rest.substring(0, colon);
+    }
+
+    private static double round(double value, int decimals) {
+        double scale = Math.pow(10, decimals);
+        return Math.round(value * scale) / scale;
+    }
+}

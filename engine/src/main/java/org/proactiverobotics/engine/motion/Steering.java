@@ -1,0 +1,83 @@
+package org.proactiverobotics.engine.motion;
+
+import java.util.Locale;
+
+/**
+ * Steering laws and the text of the robot's commands ({@code DRIVE <left_mps> <right_mps>},
+ * {@code STOP}, {@code RECHARGE}).
+ */
+public final class Steering {
+
+    /** The command that stops both wheels. */
+    public static final String STOP = "STOP";
+    /** The command that stops and charges at the station. */
+    public static final String RECHARGE = "RECHARGE";
+
+    /** Turn rate per radian of heading error, 1/s. */
+    private static final double TURN_GAIN = 3.0;
+    /** Highest turn rate the go-to law asks for, rad/s. */
+    private static final double MAX_TURN_RAD_S = 2.5;
+    /** Beyond this heading error the robot turns on the spot instead of driving on. */
+    private static final double TURN_ON_SPOT_RAD = Math.toRadians(60);
+    /** Speed per metre left to the target, 1/s: slows down on arrival. */
+    private static final double ARRIVAL_GAIN = 0.8;
+    /** Lowest forward speed while arriving, m/s, so the robot never stalls short of the target. */
+    private static final double MIN_ARRIVAL_SPEED = 0.08;
+
+    private Steering() {
+    }
+
+    /**
+     * The go-to-point law: turn toward the target in proportion to the heading error, drive on
+     * at a speed that falls with the error and near the target.
+     *
+     * @param xM      robot x, metres
+     * @param yM      robot y, metres
+     * @param yawRad  robot heading, radians
+     * @param targetX target x, metres
+     * @param targetY target y, metres
+     * @param profile the robot's drive
+     * @return a DRIVE command
+     */
+    public static String goTo(double xM, double yM, double yawRad, double targetX, double targetY, DriveProfile profile) {
+        double dx = targetX - xM;
+        double dy = targetY - yM;
+        double error = wrap(Math.atan2(dy, dx) - yawRad);
+        double turn = clamp(TURN_GAIN * error, MAX_TURN_RAD_S);
+        double speed = Math.abs(error) > TURN_ON_SPOT_RAD ? 0.0 : profile.maxSpeedMps() * Math.cos(error);
+        speed = Math.min(speed, Math.max(MIN_ARRIVAL_SPEED, ARRIVAL_GAIN * Math.hypot(dx, dy)));
+        return drive(speed, turn, profile);
+    }
+
+    /**
+     * A DRIVE command for a forward speed and a turn rate, scaled down together so that no wheel
+     * exceeds the profile's highest speed (the turn keeps its share).
+     *
+     * @param speedMps forward speed, metres per second
+     * @param turnRadS turn rate, radians per second, counter-clockwise positive
+     * @param profile  the robot's drive
+     * @return the command text
+     */
+    public static String drive(double speedMps, double turnRadS, DriveProfile profile) {
+        double half = turnRadS * profile.axleWidthM() / 2.0;
+        double left = speedMps - half;
+        double right = speedMps + half;
+        double fastest = Math.max(Math.abs(left), Math.abs(right));
+        if (fastest > profile.maxSpeedMps()) {
+            double scale = profile.maxSpeedMps() / fastest;
+            left *= scale;
+            right *= scale;
+        }
+        return String.format(Locale.ROOT, "DRIVE %.4f %.4f", left, right);
+    }
+
+    /** @return the angle brought into (-π, π], radians */
+    public static double wrap(double angleRad) {
+        double a = Math.IEEEremainder(angleRad, 2 * Math.PI);
+        return a <= -Math.PI ? a + 2 * Math.PI : a;
+    }
+
+    private static double clamp(double value, double limit) {
+        return Math.max(-limit, Math.min(limit, value));
+    }
+}

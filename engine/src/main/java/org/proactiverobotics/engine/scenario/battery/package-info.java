@@ -1,0 +1,8 @@
+/**
+ * Scenario 4, Battery monitor: BatteryMonitor asks whether the robot can reach its next
+ * checkpoint and still get to the recharge station; while yes it clones itself, if not it
+ * generates MoveToRecharge, which drives to the station, recharges to the battery_recharged
+ * level and hands back. Decides only from what the engine sees in the database. Suggests in
+ * CommandArray slot {@value org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario#SLOT}.
+ */
+package org.proactiverobotics.engine.scenario.battery;

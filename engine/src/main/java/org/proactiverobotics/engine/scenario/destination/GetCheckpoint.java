@@ -1,0 +1,56 @@
+package org.proactiverobotics.engine.scenario.destination;
+
+import java.util.List;
+import org.proactiverobotics.engine.Outcome;
+import org.proactiverobotics.engine.Rule;
+import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.tables.Checkpoint;
+import org.proactiverobotics.engine.tables.MissionTables;
+
+/**
+ * Finds the first checkpoint not yet reached and generates MoveToCheckpoint for it. When every
+ * checkpoint is reached the destination is reached: it suggests STOP and keeps looking, in
+ * case the mission gets new checkpoints.
+ */
+public final class GetCheckpoint extends Rule {
+
+    private transient Checkpoint next;
+
+    @Override
+    public String scenario() {
+        return ReachDestinationScenario.NAME;
+    }
+
+    @Override
+    protected void acquireGuardData(RuleContext ctx) {
+        List<Checkpoint> all = ctx.service(MissionTables.class).checkpoints();
+        next = all.stream().filter(c -> !c.reached()).findFirst().orElse(null);
+    }
+
+    /** Guard: the mission has checkpoints at all (they are seeded by the robot side). */
+    @Override
+    protected boolean activationGuards(RuleContext ctx) {
+        return !ctx.service(MissionTables.class).checkpoints().isEmpty();
+    }
+
+    /** Condition: every checkpoint is reached. */
+    @Override
+    protected boolean conditions(RuleContext ctx) {
+        return next == null;
+    }
+
+    @Override
+    protected void actions(RuleContext ctx) {
+        ctx.memory().commandArray().enter(ReachDestinationScenario.SLOT, Steering.STOP, scenario(), ctx.iteration());
+    }
+
+    @Override
+    protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
+        if (outcome.guardsHeld() && next != null) {
+            ctx.generate(new MoveToCheckpoint(next.seq(), next.xM(), next.yM(), next.radiusM()));
+        } else {
+            ctx.generate(this);
+        }
+    }
+}

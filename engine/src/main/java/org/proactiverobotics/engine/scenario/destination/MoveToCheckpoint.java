@@ -1,0 +1,91 @@
+package org.proactiverobotics.engine.scenario.destination;
+
+import org.proactiverobotics.engine.Outcome;
+import org.proactiverobotics.engine.Rule;
+import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.tables.GpsFix;
+import org.proactiverobotics.engine.tables.Heading;
+import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.SensorReadings;
+
+/**
+ * Steers toward one checkpoint from the GPS and inertial-unit readings, cloning itself until the
+ * checkpoint is reached; then marks it reached and generates GetCheckpoint.
+ */
+public final class MoveToCheckpoint extends Rule {
+
+    /** Counts as reached a little inside the checkpoint's radius, so the simulator agrees. */
+    static final double REACHED_FRACTION = 0.8;
+
+    private int seq;
+    private double xM;
+    private double yM;
+    private double radiusM;
+
+    private transient GpsFix position;
+    private transient Heading heading;
+    private transient boolean reached;
+
+    private MoveToCheckpoint() {
+    }
+
+    /**
+     * @param seq     the checkpoint's place in the order
+     * @param xM      its x, metres
+     * @param yM      its y, metres
+     * @param radiusM how close counts as reached, metres
+     */
+    public MoveToCheckpoint(int seq, double xM, double yM, double radiusM) {
+        this.seq = seq;
+        this.xM = xM;
+        this.yM = yM;
+        this.radiusM = radiusM;
+    }
+
+    /** @return the checkpoint this rule steers to */
+    public int seq() {
+        return seq;
+    }
+
+    @Override
+    public String scenario() {
+        return ReachDestinationScenario.NAME;
+    }
+
+    @Override
+    protected void acquireGuardData(RuleContext ctx) {
+        SensorReadings readings = ctx.service(SensorReadings.class);
+        position = readings.newestGps().orElse(null);
+        heading = readings.newestHeading().orElse(null);
+    }
+
+    /** Guard: the robot's position and heading are known. */
+    @Override
+    protected boolean activationGuards(RuleContext ctx) {
+        return position != null && heading != null;
+    }
+
+    @Override
+    protected boolean conditions(RuleContext ctx) {
+        return true;
+    }
+
+    @Override
+    protected void actions(RuleContext ctx) {
+        reached = position.distanceTo(xM, yM) < radiusM * REACHED_FRACTION;
+        if (reached) {
+            ctx.service(MissionTables.class).markReached(seq, position.simTimeMs());
+            return;
+        }
+        DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
+        String command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), xM, yM, profile);
+        ctx.memory().commandArray().enter(ReachDestinationScenario.SLOT, command, scenario(), ctx.iteration());
+    }
+
+    @Override
+    protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
+        ctx.generate(reached ? new GetCheckpoint() : this);
+    }
+}

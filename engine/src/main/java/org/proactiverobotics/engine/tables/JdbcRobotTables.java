@@ -1,0 +1,246 @@
+package org.proactiverobotics.engine.tables;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import javax.sql.DataSource;
+
+/**
+ * The engine side's tables over JDBC, for one robot. Every statement is plain SQL that H2
+ * (MySQL mode), MariaDB and MySQL 8 all run; every read goes through a {@code robot_id} index.
+ */
+public final class JdbcRobotTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments {
+
+    private final DataSource dataSource;
+    private final int robotId;
+
+    /**
+     * @param dataSource the shared database
+     * @param robotId    the robot whose rows are read and written
+     */
+    public JdbcRobotTables(DataSource dataSource, int robotId) {
+        this.dataSource = dataSource;
+        this.robotId = robotId;
+    }
+
+    /** @return the robot whose rows these are */
+    public int robotId() {
+        return robotId;
+    }
+
+    @Override
+    public Optional<GpsFix> newestGps() {
+        return queryOne("newest GPS reading",
+                "SELECT sim_time_ms, x_m, y_m FROM gps_stored_values WHERE robot_id = ? ORDER BY id DESC LIMIT 1",
+                rs -> new GpsFix(rs.getLong(1), rs.getDouble(2), rs.getDouble(3)));
+    }
+
+    @Override
+    public Optional<Heading> newestHeading() {
+        return queryOne("newest inertial-unit reading",
+                "SELECT sim_time_ms, yaw_rad FROM iudata WHERE robot_id = ? ORDER BY id DESC LIMIT 1",
+                rs -> new Heading(rs.getLong(1), rs.getDouble(2)));
+    }
+
+    @Override
+    public Optional<DistanceScan> newestScan() {
+        String sql = "SELECT sim_time_ms, angle_rad, distance_m, range_m FROM distance_sensor_data"
+                + " WHERE robot_id = ? AND sim_time_ms = (SELECT MAX(sim_time_ms) FROM distance_sensor_data WHERE robot_id = ?)"
+                + " ORDER BY sensor_index";
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
+            ps.setInt(1, robotId);
+            ps.setInt(2, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                long time = -1;
+                double range = 0;
+                double[] angles = new double[8];
+                double[] distances = new double[8];
+                int n = 0;
+                while (rs.next()) {
+                    if (n == angles.length) {
+                        angles = java.util.Arrays.copyOf(angles, n * 2);
+                        distances = java.util.Arrays.copyOf(distances, n * 2);
+                    }
+                    time = rs.getLong(1);
+                    angles[n] = rs.getDouble(2);
+                    distances[n] = rs.getDouble(3);
+                    range = Math.max(range, rs.getDouble(4));
+                    n++;
+                }
+                if (n == 0) {
+                    return Optional.empty();
+                }
+                return Optional.of(new DistanceScan(time, java.util.Arrays.copyOf(angles, n),
+                        java.util.Arrays.copyOf(distances, n), range));
+            }
+        } catch (SQLException e) {
+            throw new TablesException("reading the newest distance-sensor reading of robot " + robotId, e);
+        }
+    }
+
+    @Override
+    public Optional<BatteryState> newestBattery() {
+        return queryOne("newest battery reading",
+                "SELECT sim_time_ms, level_pct, charging FROM battery_level WHERE robot_id = ? ORDER BY id DESC LIMIT 1",
+                rs -> new BatteryState(rs.getLong(1), rs.getDouble(2), rs.getBoolean(3)));
+    }
+
+    @Override
+    public long newestSimTimeMs(Sensor sensor) {
+        String sql = switch (sensor) {
+            case GPS -> "SELECT sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
+            case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
+            case DS -> "SELECT MAX(sim_time_ms) FROM distance_sensor_data WHERE robot_id = ?";
+            case BATTERY -> "SELECT sim_time_ms FROM battery_level WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
+        };
+        return queryOne("newest " + sensor + " time", sql, rs -> {
+            long t = rs.getLong(1);
+            return rs.wasNull() ? -1L : t;
+        }).orElse(-1L);
+    }
+
+    @Override
+    public boolean pending(Sensor sensor) {
+        return queryOne("pending " + sensor + " request",
+                "SELECT id FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL AND sensor = ? LIMIT 1",
+                rs -> Boolean.TRUE, sensor.name()).isPresent();
+    }
+
+    @Override
+    public void request(Sensor sensor, long iteration) {
+        update("requesting " + sensor + " data",
+                "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)", sensor.name(), iteration);
+    }
+
+    @Override
+    public List<Checkpoint> checkpoints() {
+        return queryAll("checkpoints",
+                "SELECT seq, x_m, y_m, radius_m, reached FROM checkpoints WHERE robot_id = ? ORDER BY seq",
+                rs -> new Checkpoint(rs.getInt(1), rs.getDouble(2), rs.getDouble(3), rs.getDouble(4), rs.getBoolean(5)));
+    }
+
+    @Override
+    public void markReached(int seq, long simTimeMs) {
+        update("marking checkpoint " + seq + " reached",
+                "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?",
+                simTimeMs, robotId, seq);
+    }
+
+    @Override
+    public Optional<Station> rechargeStation() {
+        return queryOne("recharge station",
+                "SELECT x_m, y_m, radius_m FROM recharge_station WHERE robot_id = ?",
+                rs -> new Station(rs.getDouble(1), rs.getDouble(2), rs.getDouble(3)));
+    }
+
+    @Override
+    public OptionalDouble rechargeLevelPct() {
+        Optional<Double> level = queryOne("recharge level",
+                "SELECT level_pct FROM battery_recharged WHERE robot_id = ?", rs -> rs.getDouble(1));
+        return level.map(OptionalDouble::of).orElse(OptionalDouble.empty());
+    }
+
+    @Override
+    public List<Entry> read() {
+        return queryAll("strategy",
+                "SELECT slot, scenario, priority, strategy_name FROM strategy WHERE robot_id = ? ORDER BY slot",
+                rs -> new Entry(rs.getInt(1), rs.getString(2), rs.getInt(3), rs.getString(4)));
+    }
+
+    @Override
+    public void write(List<Entry> entries) {
+        try (Connection c = dataSource.getConnection()) {
+            boolean autoCommit = c.getAutoCommit();
+            c.setAutoCommit(false);
+            try (PreparedStatement delete = c.prepareStatement("DELETE FROM strategy WHERE robot_id = ?");
+                 PreparedStatement insert = c.prepareStatement(
+                         "INSERT INTO strategy (robot_id, slot, scenario, priority, strategy_name) VALUES (?, ?, ?, ?, ?)")) {
+                delete.setInt(1, robotId);
+                delete.executeUpdate();
+                for (Entry e : entries) {
+                    insert.setInt(1, robotId);
+                    insert.setInt(2, e.slot());
+                    insert.setString(3, e.scenario());
+                    insert.setInt(4, e.priority());
+                    insert.setString(5, e.name());
+                    insert.addBatch();
+                }
+                insert.executeBatch();
+                c.commit();
+            } catch (SQLException e) {
+                c.rollback();
+                throw e;
+            } finally {
+                c.setAutoCommit(autoCommit);
+            }
+        } catch (SQLException e) {
+            throw new TablesException("writing the strategy of robot " + robotId, e);
+        }
+    }
+
+    @Override
+    public void send(long iteration, long simTimeMs, String scenario, String command) {
+        update("sending command '" + command + "'",
+                "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)",
+                iteration, simTimeMs, scenario, command);
+    }
+
+    // ---- plumbing ----
+
+    private interface RowMapper<T> {
+        T map(ResultSet rs) throws SQLException;
+    }
+
+    private <T> Optional<T> queryOne(String what, String sql, RowMapper<T> mapper, Object... more) {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
+            ps.setInt(1, robotId);
+            bind(ps, 2, more);
+            try (ResultSet rs = ps.executeQuery()) {
+                return rs.next() ? Optional.ofNullable(mapper.map(rs)) : Optional.empty();
+            }
+        } catch (SQLException e) {
+            throw new TablesException("reading the " + what + " of robot " + robotId, e);
+        }
+    }
+
+    private <T> List<T> queryAll(String what, String sql, RowMapper<T> mapper) {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
+            ps.setInt(1, robotId);
+            List<T> out = new ArrayList<>();
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    out.add(mapper.map(rs));
+                }
+            }
+            return out;
+        } catch (SQLException e) {
+            throw new TablesException("reading the " + what + " of robot " + robotId, e);
+        }
+    }
+
+    /** Runs an INSERT or UPDATE; its parameters start with robot_id unless the SQL binds it elsewhere. */
+    private void update(String what, String sql, Object... params) {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
+            if (sql.startsWith("INSERT")) {
+                ps.setInt(1, robotId);
+                bind(ps, 2, params);
+            } else {
+                bind(ps, 1, params);
+            }
+            ps.executeUpdate();
+        } catch (SQLException e) {
+            throw new TablesException(what + " for robot " + robotId, e);
+        }
+    }
+
+    private static void bind(PreparedStatement ps, int first, Object[] values) throws SQLException {
+        for (int i = 0; i < values.length; i++) {
+            ps.setObject(first + i, values[i]);
+        }
+    }
+}

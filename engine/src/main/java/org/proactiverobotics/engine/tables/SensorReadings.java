@@ -1,0 +1,22 @@
+package org.proactiverobotics.engine.tables;
+
+import java.util.Optional;
+
+/** The newest sensor readings the robot wrote for this robot. */
+public interface SensorReadings {
+
+    /** @return the newest GPS reading, if any */
+    Optional<GpsFix> newestGps();
+
+    /** @return the newest inertial-unit reading, if any */
+    Optional<Heading> newestHeading();
+
+    /** @return the newest distance-sensor reading, if any */
+    Optional<DistanceScan> newestScan();
+
+    /** @return the newest battery reading, if any */
+    Optional<BatteryState> newestBattery();
+
+    /** @return the simulated time of the newest reading of a sensor, or -1 when there is none */
+    long newestSimTimeMs(Sensor sensor);
+}
