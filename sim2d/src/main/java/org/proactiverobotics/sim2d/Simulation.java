@@ -4,9 +4,12 @@ import java.util.ArrayList;
 import java.util.Iterator;
 import java.util.List;
 
+import org.dyn4j.collision.broadphase.CollisionItemBroadphaseDetectorAdapter;
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
+import org.dyn4j.dynamics.ContinuousDetectionMode;
 import org.dyn4j.dynamics.Settings;
+import org.dyn4j.dynamics.contact.ContactConstraint;
 import org.dyn4j.geometry.AABB;
 import org.dyn4j.geometry.Convex;
 import org.dyn4j.geometry.Geometry;
@@ -48,8 +51,8 @@ public final class Simulation {
     private final DetectFilter<Body, BodyFixture> staticOnly;
     private final Ray ray = new Ray(0.0);
     private final double[] distanceCache;
-    private final List<Body> touching = new ArrayList<>();
-    private final List<Body> engaged = new ArrayList<>();
+    private final List<Object> touching = new ArrayList<>();
+    private final List<Object> engaged = new ArrayList<>();
     private long steps;
     private long sampledStep = -1;
     private double level;
@@ -75,13 +78,20 @@ public final class Simulation {
         settings.setStepFrequency(dt);
         settings.setAtRestDetectionEnabled(false);
         world.setGravity(0.0, 0.0);
+        // Static bodies never move: refresh only the robot's AABB each step (see MovingOnlyBroadphase).
+        world.setBroadphaseDetector(new CollisionItemBroadphaseDetectorAdapter<>(
+                new MovingOnlyBroadphase(world.getBroadphaseDetector().getDecoratedBroadphaseDetector())));
+        WorldSpec.Robot r = spec.robot();
+        // Continuous collision detection sweeps every body each step; it is needed only when one step can
+        // carry the robot farther than half its radius (a fast robot or a long time step).
+        boolean fast = r.maxSpeedMps() * dt > r.radiusM() / 2.0;
+        settings.setContinuousDetectionMode(fast ? ContinuousDetectionMode.ALL : ContinuousDetectionMode.NONE);
 
         this.wallBody = createWall(spec.arena().radiusM());
         world.addBody(wallBody);
-        for (WorldSpec.Obstacle o : spec.obstacles()) {
-            world.addBody(createObstacle(o));
+        if (!spec.obstacles().isEmpty()) {
+            world.addBody(createObstacles(spec.obstacles()));
         }
-        WorldSpec.Robot r = spec.robot();
         this.robotBody = new Body();
         BodyFixture fixture = robotBody.addFixture(Geometry.createCircle(r.radiusM()), 1.0, 0.0, 0.0);
         fixture.setRestitution(0.0);
@@ -121,27 +131,35 @@ public final class Simulation {
             Convex box = Geometry.createRectangle(WALL_THICKNESS_M, length);
             box.rotate(phi);
             box.translate(centre * Math.cos(phi), centre * Math.sin(phi));
-            wall.addFixture(box, 1.0, 0.0, 0.0);
+            wall.addFixture(box, 1.0, 0.0, 0.0).setUserData(WallTag.INSTANCE);
         }
         wall.setMass(MassType.INFINITE);
-        wall.setUserData(WallTag.INSTANCE);
         return wall;
     }
 
-    private static Body createObstacle(WorldSpec.Obstacle o) {
+    /**
+     * Builds every obstacle as a fixture of one static body: dyn4j's step walks every body, so one body
+     * keeps the step's cost nearly flat in the obstacle count. Each fixture carries its obstacle.
+     */
+    private static Body createObstacles(List<WorldSpec.Obstacle> obstacles) {
         Body body = new Body();
-        Convex shape = o.isCircle()
-                ? Geometry.createCircle(o.radiusM())
-                : Geometry.createRectangle(o.widthM(), o.heightM());
-        body.addFixture(shape, 1.0, 0.0, 0.0);
+        for (WorldSpec.Obstacle o : obstacles) {
+            Convex shape;
+            if (o.isCircle()) {
+                shape = Geometry.createCircle(o.radiusM());
+            } else {
+                shape = Geometry.createRectangle(o.widthM(), o.heightM());
+                shape.rotate(o.angleRad());
+            }
+            shape.translate(o.x(), o.y());
+            BodyFixture fixture = body.addFixture(shape, 1.0, 0.0, 0.0);
+            fixture.setUserData(o);
+        }
         body.setMass(MassType.INFINITE);
-        body.getTransform().setRotation(o.isCircle() ? 0.0 : o.angleRad());
-        body.getTransform().setTranslation(o.x(), o.y());
-        body.setUserData(o);
         return body;
     }
 
-    /** Marks the wall body in user data (obstacle bodies carry their {@link WorldSpec.Obstacle}). */
+    /** Marks the wall's fixtures in user data (obstacle fixtures carry their {@link WorldSpec.Obstacle}). */
     enum WallTag {
         INSTANCE
     }
@@ -214,27 +232,50 @@ public final class Simulation {
     }
 
     /**
-     * Counts a collision when a wall or obstacle touches the robot and was not already engaged; a body stays
-     * engaged until the rim is {@value #RELEASE_M} m clear of it, so that the solver's touch-and-release
-     * while the robot pushes, turns or slides against it is one collision, not dozens.
+     * Counts a collision when the wall or an obstacle touches the robot and was not already engaged; it stays
+     * engaged until the rim is {@value #RELEASE_M} m clear of it, so that the solver's touch-and-release while
+     * the robot pushes, turns or slides against it is one collision, not dozens. The whole wall is one thing.
      */
     private void countCollisions(double x, double y) {
         touching.clear();
         if (steps > 0) {
-            touching.addAll(world.getInContactBodies(robotBody, false));
+            for (ContactConstraint<Body> cc : world.getContacts(robotBody)) {
+                if (cc.isSensor()) {
+                    continue;
+                }
+                Object tag = (cc.getBody1() == robotBody ? cc.getFixture2() : cc.getFixture1()).getUserData();
+                if (!containsSame(touching, tag)) {
+                    touching.add(tag);
+                }
+            }
         }
-        for (Body body : touching) {
-            if (!engaged.contains(body)) {
-                engaged.add(body);
+        for (Object tag : touching) {
+            if (!containsSame(engaged, tag)) {
+                engaged.add(tag);
                 truth.collisions++;
             }
         }
-        engaged.removeIf(body -> !touching.contains(body) && clearanceTo(body, x, y) > RELEASE_M);
+        for (int i = engaged.size() - 1; i >= 0; i--) {
+            Object tag = engaged.get(i);
+            if (!containsSame(touching, tag) && clearanceTo(tag, x, y) > RELEASE_M) {
+                engaged.remove(i);
+            }
+        }
     }
 
-    /** @return the gap between the robot's rim and a wall or obstacle body, metres */
-    private double clearanceTo(Body body, double x, double y) {
-        if (body.getUserData() instanceof WorldSpec.Obstacle o) {
+    /** Identity, not equality: two obstacles may be equal records yet distinct things. */
+    private static boolean containsSame(List<Object> list, Object o) {
+        for (int i = 0; i < list.size(); i++) {
+            if (list.get(i) == o) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** @return the gap between the robot's rim and the wall or an obstacle, metres */
+    private double clearanceTo(Object tag, double x, double y) {
+        if (tag instanceof WorldSpec.Obstacle o) {
             return o.distanceTo(x, y) - spec.robot().radiusM();
         }
         return wallClearance(x, y);
@@ -264,7 +305,7 @@ public final class Simulation {
             AABB query = new AABB(x - reach, y - reach, x + reach, y + reach);
             Iterator<DetectResult<Body, BodyFixture>> it = world.detectIterator(query, staticOnly);
             while (it.hasNext()) {
-                Object data = it.next().getBody().getUserData();
+                Object data = it.next().getFixture().getUserData();
                 if (data instanceof WorldSpec.Obstacle o) {
                     min = Math.min(min, Math.max(0.0, o.distanceTo(x, y) - spec.robot().radiusM()));
                 }
