@@ -1,0 +1,97 @@
+package org.proactiverobotics.bench.sim;
+
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.Warmup;
+import org.proactiverobotics.sim2d.DistanceSensor;
+import org.proactiverobotics.sim2d.SensorNoise;
+import org.proactiverobotics.sim2d.SimRobot;
+import org.proactiverobotics.sim2d.Simulation;
+import org.proactiverobotics.sim2d.WorldSpec;
+
+/**
+ * Steps per second of the sim2d world, headless: the robot wanders (drives ahead, turns away from what its
+ * front sensors see) and, in {@link #stepAndReadAllSensors}, reads GPS, inertial unit, all 8 distance sensors
+ * and the battery every step, as a controller does. {@link #stepOnly} drives blind, for the physics alone.
+ * {@code world} is the bundled reference arena or a generated arena with 10, 100 or 1000 obstacles at
+ * constant density. The simulation restarts at each iteration so that every iteration sees the same run.
+ *
+ * <pre>
+ * java -jar bench/target/benchmarks.jar SimStepBenchmark
+ * </pre>
+ */
+@State(Scope.Thread)
+@BenchmarkMode(Mode.Throughput)
+@OutputTimeUnit(TimeUnit.SECONDS)
+@Warmup(iterations = 3, time = 2)
+@Measurement(iterations = 5, time = 2)
+@Fork(1)
+public class SimStepBenchmark {
+
+    /** The reference arena, or a number of obstacles. */
+    @Param({"reference", "10", "100", "1000"})
+    public String world;
+
+    /** Sensor noise: off, or {@link SensorNoise#SMALL}. */
+    @Param({"false"})
+    public boolean noise;
+
+    private WorldSpec spec;
+    private Simulation sim;
+    private SimRobot robot;
+    private List<DistanceSensor> sensors;
+
+    @Setup(Level.Trial)
+    public void buildWorld() {
+        spec = ClutterWorlds.of(world);
+    }
+
+    @Setup(Level.Iteration)
+    public void restart() {
+        sim = new Simulation(spec, noise ? SensorNoise.SMALL : SensorNoise.NONE);
+        robot = sim.robot();
+        sensors = robot.distanceSensors();
+    }
+
+    /** One step with every sensor read, as a controller's step does. */
+    @Benchmark
+    public double stepAndReadAllSensors() {
+        double sum = 0;
+        double frontLeft = Math.min(sensors.get(4).getValue(), sensors.get(5).getValue());
+        double frontRight = Math.min(sensors.get(3).getValue(), sensors.get(2).getValue());
+        for (DistanceSensor s : sensors) {
+            sum += s.getValue();
+        }
+        double[] p = robot.gps().getValues();
+        double[] rpy = robot.inertialUnit().getRollPitchYaw();
+        sum += p[0] + p[1] + rpy[2] + robot.battery().getLevelPct();
+        if (Math.min(frontLeft, frontRight) < 0.35) {
+            double turn = frontRight < frontLeft ? 0.3 : -0.3;
+            robot.setWheelSpeeds(-turn, turn);
+        } else {
+            robot.setWheelSpeeds(0.5, 0.45);
+        }
+        sim.step();
+        return sum;
+    }
+
+    /** One step of physics and ground truth only; the robot drives a wide circle. */
+    @Benchmark
+    public double stepOnly() {
+        robot.setWheelSpeeds(0.5, 0.45);
+        sim.step();
+        return sim.groundTruth().x();
+    }
+}
