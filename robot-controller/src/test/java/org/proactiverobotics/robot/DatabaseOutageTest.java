@@ -38,9 +38,9 @@ class DatabaseOutageTest {
                 .withRetention(RetentionPolicy.KEEP_ALL).withBackoff(20, 100);
         Simulation sim = new Simulation(TestWorlds.arena().withObstacles(List.of()));
         try (HikariDataSource enginePool = Databases.pool(Databases.embeddedH2Url(name), "sa", "");
-             HikariDataSource robotPool = RobotPool.open(tcpUrl, "sa", "", 250);
-             ProactiveController robot = new ProactiveController(sim, new JdbcRobotLink(robotPool, 1), config)) {
-            Schema.apply(robotPool);
+             HikariDataSource robotPool = RobotPool.open(tcpUrl, "sa", "", 1_000);
+             ProactiveController robot = new ProactiveController(sim, new JdbcRobotLink(robotPool), config)) {
+            Schema.apply(enginePool);
             FakeEngine engine = new FakeEngine(enginePool, ROBOT);
 
             for (int i = 0; i < 5; i++) { // the engine sends a command every iteration
@@ -64,7 +64,7 @@ class DatabaseOutageTest {
             long wallMs = (System.nanoTime() - startNanos) / 1_000_000;
             assertThat(robot.stoppedByWatchdog()).isTrue();
             assertThat(steps).isEqualTo(11); // 320 ms of simulated time without a new command
-            assertThat(wallMs).as("the loop never blocks for long").isLessThan(11 * 1000);
+            assertThat(wallMs).as("the loop never blocks for long").isLessThan(11 * 2_500);
             assertThat(robot.databaseFailing()).isTrue();
             assertThat(sim.robot().leftSpeedMps()).isZero();
             double stoppedAt = sim.groundTruth().distanceM();
@@ -77,7 +77,7 @@ class DatabaseOutageTest {
                 sim.step();
                 longestStepMs = Math.max(longestStepMs, (System.nanoTime() - t0) / 1_000_000);
             }
-            assertThat(longestStepMs).as("longest step while down, ms").isLessThan(1_000);
+            assertThat(longestStepMs).as("longest step while down, ms").isLessThan(2_500); // one connection time-out + slack
             assertThat(sim.groundTruth().distanceM()).isEqualTo(stoppedAt);
             RobotStats during = robot.stats();
             assertThat(during.outages()).isEqualTo(1);

@@ -19,6 +19,9 @@ import javax.sql.DataSource;
  */
 public final class JdbcRobotLink implements RobotLink {
 
+    // "Newest" reads say ORDER BY robot_id DESC, id DESC: H2 reads the (robot_id, id) index
+    // backwards only when the ORDER BY names its columns; with ORDER BY id DESC alone it scans
+    // every row of the robot (measured: 1 row instead of 10 000, 60 us instead of 500 us).
     private static final String PENDING =
             "SELECT id, sensor FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL ORDER BY id";
     private static final String INSERT_GPS =
@@ -32,27 +35,29 @@ public final class JdbcRobotLink implements RobotLink {
     private static final String MARK_ANSWERED = "UPDATE sensor_requests SET answered_sim_time_ms = ? "
             + "WHERE id = ? AND robot_id = ? AND answered_sim_time_ms IS NULL";
     private static final String NEWEST_COMMAND = "SELECT id, iteration, sim_time_ms, scenario, command "
-            + "FROM engine_comments WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
+            + "FROM engine_comments WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
 
     private final DataSource dataSource;
     private final int queryTimeoutS;
 
     /**
      * @param dataSource    the database (not closed by this link)
-     * @param queryTimeoutS the longest any one statement may run, seconds (at least 1), so that a
-     *                      hung server cannot freeze the control loop
+     * @param queryTimeoutS the longest any one statement may run, seconds, or 0 for no limit.
+     *                      Costly on H2 (each statement then changes a session setting: about 5x
+     *                      the time of a step); {@link RobotPool} bounds a hung MariaDB / MySQL
+     *                      server with a socket time-out instead
      */
     public JdbcRobotLink(DataSource dataSource, int queryTimeoutS) {
         this.dataSource = Objects.requireNonNull(dataSource, "dataSource");
-        if (queryTimeoutS < 1) {
-            throw new IllegalArgumentException("queryTimeoutS must be >= 1: " + queryTimeoutS);
+        if (queryTimeoutS < 0) {
+            throw new IllegalArgumentException("queryTimeoutS must be >= 0: " + queryTimeoutS);
         }
         this.queryTimeoutS = queryTimeoutS;
     }
 
-    /** @param dataSource the database (not closed by this link); statements time out after 2 s */
+    /** @param dataSource the database (not closed by this link); no statement time-out */
     public JdbcRobotLink(DataSource dataSource) {
-        this(dataSource, 2);
+        this(dataSource, 0);
     }
 
     @Override
@@ -225,16 +230,17 @@ public final class JdbcRobotLink implements RobotLink {
             int deleted = 0;
             for (String table : new String[] {"gps_stored_values", "iudata", "battery_level"}) {
                 deleted += pruneBy(c, robotId,
-                        "SELECT id FROM " + table + " WHERE robot_id = ? ORDER BY id DESC LIMIT 1 OFFSET " + keep,
+                        "SELECT robot_id, id FROM " + table + " WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1 OFFSET "
+                                + keep,
                         "DELETE FROM " + table + " WHERE robot_id = ? AND id <= ?");
             }
             // One distance reading = the rows sharing a sim_time_ms; served by idx_ds_newest.
             deleted += pruneBy(c, robotId,
-                    "SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ? GROUP BY sim_time_ms "
-                            + "ORDER BY sim_time_ms DESC LIMIT 1 OFFSET " + keep,
+                    "SELECT DISTINCT robot_id, sim_time_ms FROM distance_sensor_data WHERE robot_id = ? "
+                            + "ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1 OFFSET " + keep,
                     "DELETE FROM distance_sensor_data WHERE robot_id = ? AND sim_time_ms <= ?");
             deleted += pruneBy(c, robotId,
-                    "SELECT id FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL "
+                    "SELECT robot_id, id FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL "
                             + "ORDER BY id DESC LIMIT 1 OFFSET " + keep,
                     "DELETE FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL AND id <= ?");
             return deleted;
@@ -290,7 +296,7 @@ public final class JdbcRobotLink implements RobotLink {
                 if (!rs.next()) {
                     return 0;
                 }
-                cutoff = rs.getLong(1);
+                cutoff = rs.getLong(2); // the first column is robot_id
             }
         }
         try (PreparedStatement ps = prepare(c, delete)) {
@@ -312,7 +318,9 @@ public final class JdbcRobotLink implements RobotLink {
 
     private PreparedStatement prepare(Connection c, String sql) throws SQLException {
         PreparedStatement ps = c.prepareStatement(sql);
-        ps.setQueryTimeout(queryTimeoutS);
+        if (queryTimeoutS > 0) {
+            ps.setQueryTimeout(queryTimeoutS);
+        }
         return ps;
     }
 

@@ -7,12 +7,16 @@ import org.proactiverobotics.db.Databases;
 /**
  * The robot's connection pool: the project's defaults ({@link Databases#config}) with a short
  * connection time-out, so that a database that is gone costs the control loop a fraction of a
- * second per retry, not the usual 30 s.
+ * second per retry, not the usual 30 s; on MariaDB / MySQL also a socket time-out
+ * ({@value #SOCKET_TIMEOUT_MS} ms), so that a server that hangs mid-statement cannot freeze it.
  */
 public final class RobotPool {
 
     /** The default time to wait for a connection, milliseconds. */
     public static final long DEFAULT_CONNECTION_TIMEOUT_MS = 500;
+
+    /** The longest wait for a MariaDB / MySQL server's answer to one statement, milliseconds. */
+    public static final int SOCKET_TIMEOUT_MS = 2_000;
 
     private RobotPool() {
     }
@@ -31,6 +35,11 @@ public final class RobotPool {
         config.setMaximumPoolSize(2);
         config.setMinimumIdle(1);
         config.setPoolName("proactive-robot");
+        if (jdbcUrl.startsWith("jdbc:mariadb:") || jdbcUrl.startsWith("jdbc:mysql:")) {
+            // A server that stops answering must not freeze the control loop (both drivers: ms).
+            config.addDataSourceProperty("socketTimeout", String.valueOf(SOCKET_TIMEOUT_MS));
+            config.addDataSourceProperty("connectTimeout", String.valueOf(Math.max(250, connectionTimeoutMs)));
+        }
         return new HikariDataSource(config);
     }
 
