@@ -298,4 +298,24 @@ class ProactiveControllerTest {
             }
         }
     }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void runStepsTheWorldUntilItsTimeLimitAndLeavesTheRobotStopped(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            FakeEngine engine = new FakeEngine(db.dataSource(), ROBOT);
+            WorldSpec world = TestWorlds.arena().withObstacles(List.of());
+            world = new WorldSpec(world.name(), world.timeStepMs(), 0.64, world.seed(), world.arena(), world.robot(),
+                    world.obstacles(), world.checkpoints(), world.checkpointRadiusM(), world.rechargeStation(),
+                    world.battery());
+            Simulation sim = new Simulation(world);
+            try (ProactiveController robot = controller(db, sim, CONFIG.withWatchdogTimeoutMs(10_000))) {
+                engine.command("FORWARD 0.3");
+                assertThat(robot.run()).isEqualTo(640);
+                assertThat(robot.stats().controlSteps()).isEqualTo(20);
+                assertThat(sim.groundTruth().distanceM()).isCloseTo(0.3 * 0.64, within(0.02));
+                assertThat(sim.robot().leftSpeedMps()).isZero();
+            }
+        }
+    }
 }
