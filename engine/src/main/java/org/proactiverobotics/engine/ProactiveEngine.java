@@ -63,6 +63,7 @@ public final class ProactiveEngine {
     private boolean resumed;
     private List<RuleFailure> lastFailures = List.of();
     private final ArrayList<RuleFailure> failures = new ArrayList<>();
+    private final FailureLog failureLog = new FailureLog();
     private final List<RuleFailure> failuresView = Collections.unmodifiableList(failures);
 
     private int generatedCount;
@@ -256,7 +257,7 @@ public final class ProactiveEngine {
             generatedCount = generatedMark;
             RuleFailure failure = RuleFailure.of(iteration, rule, part, e);
             failures.add(failure);
-            LOG.warn("{}", failure, e);
+            failureLog.failed(failure, e);
             return Outcome.FAILED;
         }
     }
