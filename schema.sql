@@ -6,7 +6,9 @@
 -- carry the simulated time in milliseconds (sim_time_ms); column names carry units:
 -- _m metres, _rad radians, _pct percent (0-100), _ms milliseconds.
 -- The robot writes readings; the engine writes requests, commands and its own state.
--- "Newest" reads go through (robot_id, id) indexes: ids grow with time on both sides.
+-- "Newest" reads go through (robot_id, id) indexes: ids grow with time on both sides. Write
+-- them as ORDER BY robot_id DESC, id DESC LIMIT 1: H2 then walks the index backwards (a plain
+-- ORDER BY id DESC scans every row of the robot); MariaDB and MySQL do the same with either.
 
 -- ======================================================================================
 -- The paper's eight tables
@@ -35,7 +37,8 @@ CREATE TABLE IF NOT EXISTS iudata (
 
 -- Distance sensor readings (sensor 'DS'): one row per sensor; one reading = the rows of one
 -- robot sharing a sim_time_ms. angle_rad is the sensor's direction relative to the robot's
--- heading; distance_m equals range_m when the ray hits nothing.
+-- heading; distance_m equals range_m when the ray hits nothing. The newest reading is found
+-- through (robot_id, id), its rows through (robot_id, sim_time_ms).
 CREATE TABLE IF NOT EXISTS distance_sensor_data (
   id           BIGINT AUTO_INCREMENT PRIMARY KEY,
   robot_id     INT    NOT NULL,
@@ -44,7 +47,8 @@ CREATE TABLE IF NOT EXISTS distance_sensor_data (
   angle_rad    DOUBLE NOT NULL,
   distance_m   DOUBLE NOT NULL,
   range_m      DOUBLE NOT NULL,
-  INDEX idx_ds_newest (robot_id, sim_time_ms)
+  INDEX idx_ds_newest (robot_id, id),
+  INDEX idx_ds_time (robot_id, sim_time_ms)
 );
 
 -- Battery readings (sensor 'BATTERY'); the robot writes one at start with the full level.

@@ -36,21 +36,22 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
     @Override
     public Optional<GpsFix> newestGps() {
         return queryOne("newest GPS reading",
-                "SELECT sim_time_ms, x_m, y_m FROM gps_stored_values WHERE robot_id = ? ORDER BY id DESC LIMIT 1",
+                "SELECT sim_time_ms, x_m, y_m FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
                 rs -> new GpsFix(rs.getLong(1), rs.getDouble(2), rs.getDouble(3)));
     }
 
     @Override
     public Optional<Heading> newestHeading() {
         return queryOne("newest inertial-unit reading",
-                "SELECT sim_time_ms, yaw_rad FROM iudata WHERE robot_id = ? ORDER BY id DESC LIMIT 1",
+                "SELECT sim_time_ms, yaw_rad FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
                 rs -> new Heading(rs.getLong(1), rs.getDouble(2)));
     }
 
     @Override
     public Optional<DistanceScan> newestScan() {
         String sql = "SELECT sim_time_ms, angle_rad, distance_m, range_m FROM distance_sensor_data"
-                + " WHERE robot_id = ? AND sim_time_ms = (SELECT MAX(sim_time_ms) FROM distance_sensor_data WHERE robot_id = ?)"
+                + " WHERE robot_id = ? AND sim_time_ms = (SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ?"
+                + " ORDER BY robot_id DESC, id DESC LIMIT 1)"
                 + " ORDER BY sensor_index";
         try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
             ps.setInt(1, robotId);
@@ -86,22 +87,19 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
     @Override
     public Optional<BatteryState> newestBattery() {
         return queryOne("newest battery reading",
-                "SELECT sim_time_ms, level_pct, charging FROM battery_level WHERE robot_id = ? ORDER BY id DESC LIMIT 1",
+                "SELECT sim_time_ms, level_pct, charging FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
                 rs -> new BatteryState(rs.getLong(1), rs.getDouble(2), rs.getBoolean(3)));
     }
 
     @Override
     public long newestSimTimeMs(Sensor sensor) {
         String sql = switch (sensor) {
-            case GPS -> "SELECT sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
-            case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
-            case DS -> "SELECT MAX(sim_time_ms) FROM distance_sensor_data WHERE robot_id = ?";
-            case BATTERY -> "SELECT sim_time_ms FROM battery_level WHERE robot_id = ? ORDER BY id DESC LIMIT 1";
+            case GPS -> "SELECT sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
+            case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
+            case DS -> "SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
+            case BATTERY -> "SELECT sim_time_ms FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
         };
-        return queryOne("newest " + sensor + " time", sql, rs -> {
-            long t = rs.getLong(1);
-            return rs.wasNull() ? -1L : t;
-        }).orElse(-1L);
+        return queryOne("newest " + sensor + " time", sql, rs -> rs.getLong(1)).orElse(-1L);
     }
 
     @Override

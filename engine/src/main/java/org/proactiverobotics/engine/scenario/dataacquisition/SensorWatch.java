@@ -44,8 +44,12 @@ public abstract class SensorWatch extends Rule {
         pending = ctx.service(SensorRequests.class).pending(sensor());
     }
 
+    /** With an interval of 0 any reading is too old: nothing to read. */
     @Override
     protected void acquireConditionData(RuleContext ctx) {
+        if (intervalMs == 0) {
+            return;
+        }
         SensorReadings readings = ctx.service(SensorReadings.class);
         newestMs = readings.newestSimTimeMs(sensor());
         nowMs = sensor() == Sensor.GPS ? newestMs : readings.newestSimTimeMs(Sensor.GPS);
@@ -58,7 +62,7 @@ public abstract class SensorWatch extends Rule {
 
     @Override
     protected boolean conditions(RuleContext ctx) {
-        return newestMs < 0 || nowMs - newestMs >= intervalMs;
+        return intervalMs == 0 || newestMs < 0 || nowMs - newestMs >= intervalMs;
     }
 
     @Override
