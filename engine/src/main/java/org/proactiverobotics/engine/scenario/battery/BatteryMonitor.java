@@ -72,7 +72,9 @@ public final class BatteryMonitor extends Rule {
     /**
      * Condition: the battery is too low to reach the next checkpoint and then the station (for
      * the last checkpoint: to reach it), and a recharge would help (the battery is below the
-     * level a recharge gives; otherwise going on is the best there is).
+     * level a recharge gives; otherwise going on is the best there is). Until the cost of travel
+     * has been measured, only the point of no return counts: just enough left to reach the
+     * station at the cautious prior cost.
      */
     @Override
     protected boolean conditions(RuleContext ctx) {
@@ -80,12 +82,20 @@ public final class BatteryMonitor extends Rule {
         if (next == null) {
             return false;
         }
+        double fullPct = ctx.service(MissionTables.class).rechargeLevelPct().orElse(100.0);
+        if (battery.levelPct() >= fullPct - MoveToRecharge.FULL_TOLERANCE_PCT) {
+            return false;
+        }
+        double perMetre = drain.pctPerMetre() * DETOUR_FACTOR;
+        if (!drain.learnt()) {
+            neededPct = perMetre * position.distanceTo(station.xM(), station.yM()) + RESERVE_PCT;
+            return battery.levelPct() < neededPct;
+        }
         boolean last = next.seq() == checkpoints.get(checkpoints.size() - 1).seq();
         double metres = position.distanceTo(next.xM(), next.yM())
                 + (last ? 0.0 : Math.hypot(station.xM() - next.xM(), station.yM() - next.yM()));
-        neededPct = drain.pctPerMetre() * DETOUR_FACTOR * metres + RESERVE_PCT;
-        double fullPct = ctx.service(MissionTables.class).rechargeLevelPct().orElse(100.0);
-        return battery.levelPct() < neededPct && battery.levelPct() < fullPct - MoveToRecharge.FULL_TOLERANCE_PCT;
+        neededPct = perMetre * metres + RESERVE_PCT;
+        return battery.levelPct() < neededPct;
     }
 
     @Override

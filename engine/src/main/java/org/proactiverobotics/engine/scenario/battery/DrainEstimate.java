@@ -45,6 +45,11 @@ final class DrainEstimate {
         lastLevelPct = levelPct;
     }
 
+    /** @return whether enough travel has been seen to replace the prior by a measurement */
+    boolean learnt() {
+        return travelledM >= LEARN_AFTER_M;
+    }
+
     /** @return the estimated cost of travel, percent per metre */
     double pctPerMetre() {
         return travelledM < LEARN_AFTER_M ? PRIOR_PCT_PER_M : drainedPct / travelledM;
