@@ -1,0 +1,70 @@
+package org.proactiverobotics.e2e;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
+import org.proactiverobotics.app.mission.Mission;
+import org.proactiverobotics.app.mission.MissionOptions;
+import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.db.DatabaseKind;
+import org.proactiverobotics.db.TestDatabase;
+import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.sim2d.Simulation;
+import org.proactiverobotics.sim2d.WorldFiles;
+
+/** Runs missions for the end-to-end tests, each on a fresh database, and remembers H2 runs. */
+final class Missions {
+
+    /** A finished mission: its report and the files it wrote. */
+    record Run(MissionReport report, Path outDir) {
+        List<JsonObject> trace() throws IOException {
+            return Files.readAllLines(outDir.resolve("trace.jsonl")).stream()
+                    .map(line -> JsonParser.parseString(line).getAsJsonObject()).toList();
+        }
+
+        /** The report without what depends on the machine's speed or the database kind. */
+        MissionReport deterministicPart() {
+            MissionReport r = report;
+            return new MissionReport(r.world(), r.success(), r.outcome(), r.strategy(), "-", r.checkpointsReached(),
+                    r.checkpointsTotal(), r.simTimeS(), 0, 0, r.controlSteps(), r.engineIterations(), r.distanceM(),
+                    r.collisions(), r.minClearanceM(), r.minBattery(), r.finalBattery(), r.recharges(), r.commandWins(),
+                    r.ruleFailures(), null);
+        }
+    }
+
+    private static final Map<String, Run> H2_RUNS = new ConcurrentHashMap<>();
+
+    private Missions() {
+    }
+
+    /** The run of a bundled world with safety-first on H2, done once per test JVM. */
+    static Run onH2(String world) {
+        return H2_RUNS.computeIfAbsent(world, w -> run(w, DatabaseKind.H2, "safety-first", sim -> { }));
+    }
+
+    static Run run(String world, DatabaseKind kind, String strategy, Consumer<Simulation> onStep) {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            return run(world, db, strategy, onStep);
+        } catch (java.sql.SQLException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    static Run run(String world, TestDatabase db, String strategy, Consumer<Simulation> onStep) {
+        try {
+            Path out = Files.createTempDirectory("mission-" + world + "-");
+            MissionOptions options = new MissionOptions(WorldFiles.bundled(world), db.jdbcUrl(), db.user(), db.password(),
+                    strategy, 1);
+            MissionReport report = new Mission(options).onStep(onStep).run(out);
+            return new Run(report, out);
+        } catch (IOException | java.sql.SQLException e) {
+            throw new IllegalStateException("mission " + world + " on " + db.kind() + " could not run", e);
+        }
+    }
+}

@@ -1,0 +1,91 @@
+package org.proactiverobotics.e2e;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.proactiverobotics.app.Main;
+import picocli.CommandLine;
+
+/** {@code run} through the real command line (DESIGN sections 7 and 8). */
+class RunCommandTest {
+
+    @TempDir
+    Path tmp;
+
+    private final StringWriter out = new StringWriter();
+    private final StringWriter err = new StringWriter();
+
+    private int run(String... args) {
+        CommandLine cl = Main.commandLine();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(err, true));
+        return cl.execute(args);
+    }
+
+    @Test
+    void theDefaultMissionWritesTheReportTraceAndPicture() throws Exception {
+        Path outDir = tmp.resolve("run");
+        int code = run("run", "--out", outDir.toString(), "--quiet");
+        assertThat(code).as(err.toString()).isZero();
+        assertThat(out.toString()).contains("MISSION_ACCOMPLISHED").contains(outDir.resolve("report.json").toString());
+        JsonObject report = JsonParser.parseString(Files.readString(outDir.resolve("report.json"))).getAsJsonObject();
+        assertThat(report.keySet()).contains("world", "success", "outcome", "checkpointsReached", "checkpointsTotal",
+                "simTimeS", "wallTimeS", "controlSteps", "engineIterations", "distanceM", "collisions", "minBattery",
+                "recharges", "commandWins");
+        assertThat(report.get("world").getAsString()).isEqualTo("reference-arena");
+        assertThat(report.get("success").getAsBoolean()).isTrue();
+        assertThat(report.getAsJsonObject("commandWins").keySet()).contains("ReachDestination", "ObstacleAvoidance");
+        // The command line runs the same mission as the library, to the step.
+        assertThat(report.get("controlSteps").getAsLong())
+                .isEqualTo(Missions.onH2("reference-arena").report().controlSteps());
+        assertThat(Files.readString(outDir.resolve("trajectory.svg"))).startsWith("<?xml").contains("<svg");
+        assertThat(Files.readAllLines(outDir.resolve("trace.jsonl"))).hasSize((int) report.get("engineIterations").getAsLong() - 2);
+    }
+
+    @Test
+    void anInvalidWorldExitsTwoAndWritesNothing() throws Exception {
+        Path world = tmp.resolve("bad.json");
+        Files.writeString(world, "{\"name\": \"bad world\", \"arena\": {\"radiusM\": -1}}");
+        Path outDir = tmp.resolve("never");
+        assertThat(run("run", "--world", world.toString(), "--out", outDir.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("name").contains("arena.radiusM").contains("checkpoints");
+        assertThat(outDir).doesNotExist();
+    }
+
+    @Test
+    void anUnknownStrategyExitsTwoNamingTheKnownOnesAndWritesNothing() {
+        Path outDir = tmp.resolve("never");
+        assertThat(run("run", "--strategy", "yolo", "--out", outDir.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("yolo").contains("safety-first").contains("destination-first");
+        assertThat(outDir).doesNotExist();
+    }
+
+    @Test
+    void anUnknownOptionIsAUsageErrorWithExitTwo() {
+        assertThat(run("run", "--wrld", "x.json")).isEqualTo(2);
+        assertThat(err.toString()).contains("--wrld");
+    }
+
+    @Test
+    void anUnreachableDatabaseIsAnInfrastructureFailureWithExitThree() {
+        Path outDir = tmp.resolve("out");
+        int code = run("run", "--db", "jdbc:mariadb://127.0.0.1:1/nowhere?connectTimeout=500", "--out", outDir.toString(), "--quiet");
+        assertThat(code).isEqualTo(3);
+        assertThat(err.toString()).contains("database failure").contains("127.0.0.1:1");
+    }
+
+    @Test
+    void helpAndVersionExitZero() {
+        assertThat(run("run", "--help")).isZero();
+        assertThat(out.toString()).contains("--world").contains("--strategy").contains("safety-first").contains("--db");
+        assertThat(run("--version")).isZero();
+        assertThat(out.toString()).contains("proactive-robotics");
+    }
+}
