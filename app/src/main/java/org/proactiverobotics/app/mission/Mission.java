@@ -13,22 +13,12 @@ import java.util.TreeMap;
 import java.util.function.Consumer;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.db.Schema;
-import org.proactiverobotics.engine.Algorithm;
 import org.proactiverobotics.engine.CommandArray;
 import org.proactiverobotics.engine.IterationSummary;
-import org.proactiverobotics.engine.JdbcStateStore;
-import org.proactiverobotics.engine.ProactiveEngine;
-import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.motion.DriveProfile;
-import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
 import org.proactiverobotics.engine.scenario.decision.Strategies;
-import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
-import org.proactiverobotics.engine.tables.MissionTables;
-import org.proactiverobotics.engine.tables.SensorReadings;
-import org.proactiverobotics.engine.tables.SensorRequests;
-import org.proactiverobotics.engine.tables.StrategyTable;
 import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.robot.RobotConfig;
 import org.proactiverobotics.sim2d.GroundTruth;
@@ -44,10 +34,6 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * seed give the same run.
  */
 public final class Mission {
-
-    /** The scenarios StartUp creates, in the paper's order 1 → 4 → 2 → 3 → 5. */
-    public static final List<String> SCENARIOS = List.of(
-            "DataAcquisition", "BatteryMonitor", "ReachDestination", "ObstacleAvoidance", "DecisionMaking");
 
     private final MissionOptions options;
     private final List<SvgRenderer.TrajectoryPoint> path = new ArrayList<>();
@@ -91,24 +77,12 @@ public final class Mission {
         try (HikariDataSource enginePool = Databases.pool(options.jdbcUrl(), options.user(), options.password())) {
             Schema.apply(enginePool);
             clearRobotRows(enginePool, robotId);
-            JdbcRobotTables tables = new JdbcRobotTables(enginePool, robotId);
-            tables.write(Strategies.named(options.strategy()));
+            new JdbcRobotTables(enginePool, robotId).write(Strategies.named(options.strategy()));
 
             Simulation sim = new Simulation(world);
-            DecisionObserver observer = this::decided;
-            ProactiveEngine engine = ProactiveEngine.builder()
-                    .robotId(robotId)
-                    .algorithm(Algorithm.LAZY)
-                    .store(new JdbcStateStore(enginePool))
-                    .service(SensorReadings.class, tables)
-                    .service(SensorRequests.class, tables)
-                    .service(MissionTables.class, tables)
-                    .service(StrategyTable.class, tables)
-                    .service(EngineComments.class, tables)
-                    .service(DriveProfile.class, new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM()))
-                    .service(DecisionObserver.class, observer)
-                    .build();
-            engine.startFresh(ScenarioRegistry.load().startUp(SCENARIOS));
+            EngineSide engine = EngineSide.build(enginePool, robotId,
+                    new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM()), this::decided);
+            engine.startFresh();
 
             try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"));
                  ProactiveController controller = ProactiveController.connect(sim, options.jdbcUrl(), options.user(),
@@ -121,7 +95,7 @@ public final class Mission {
         }
     }
 
-    private MissionReport loop(Simulation sim, ProactiveEngine engine, ProactiveController controller) {
+    private MissionReport loop(Simulation sim, EngineSide engine, ProactiveController controller) {
         WorldSpec world = options.world();
         GroundTruth truth = sim.groundTruth();
         long physicsNs = 0;
@@ -138,7 +112,7 @@ public final class Mission {
             controller.sense();
             long t1 = System.nanoTime();
             lastDecisionSimTimeMs = sim.simTimeMs();
-            IterationSummary summary = engine.runIteration();
+            IterationSummary summary = engine.iterate();
             failures += summary.rulesFailed();
             long t2 = System.nanoTime();
             controller.act();
@@ -172,7 +146,7 @@ public final class Mission {
         double simS = sim.simTimeMs() / 1000.0;
         return new MissionReport(world.name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, options.strategy(),
                 databaseKind(options.jdbcUrl()), truth.checkpointsReached(), truth.checkpointsTotal(), simS,
-                round(wallS, 3), round(simS / Math.max(wallS, 1e-9), 1), steps, engine.iteration(),
+                round(wallS, 3), round(simS / Math.max(wallS, 1e-9), 1), steps, engine.engine().iteration(),
                 round(truth.distanceM(), 3), truth.collisions(), round(truth.minClearanceM(), 4),
                 round(truth.minBatteryPct(), 2), round(truth.batteryPct(), 2), truth.recharges(),
                 Map.copyOf(commandWins), failures,

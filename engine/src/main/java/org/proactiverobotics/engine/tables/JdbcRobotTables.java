@@ -188,6 +188,45 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
                 iteration, simTimeMs, scenario, command);
     }
 
+    /**
+     * Bounds the engine's history of this robot: keeps the newest {@code keepRows} commands,
+     * answered sensor requests and rule failures (pending requests always stay).
+     *
+     * @param keepRows how many rows of each to keep
+     * @return the rows deleted
+     */
+    public int pruneHistory(int keepRows) {
+        int deleted = 0;
+        try (Connection c = dataSource.getConnection()) {
+            deleted += pruneOlderThanNewest(c, "engine_comments", "", keepRows);
+            deleted += pruneOlderThanNewest(c, "rule_failures", "", keepRows);
+            deleted += pruneOlderThanNewest(c, "sensor_requests", " AND answered_sim_time_ms IS NOT NULL", keepRows);
+        } catch (SQLException e) {
+            throw new TablesException("pruning the engine history of robot " + robotId, e);
+        }
+        return deleted;
+    }
+
+    /** Deletes a robot's rows older than its keep-th newest (found through the (robot_id, id) index). */
+    private int pruneOlderThanNewest(Connection c, String table, String filter, int keep) throws SQLException {
+        long boundary;
+        try (PreparedStatement ps = c.prepareStatement("SELECT id FROM " + table + " WHERE robot_id = ?" + filter
+                + " ORDER BY robot_id DESC, id DESC LIMIT 1 OFFSET " + keep)) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                if (!rs.next()) {
+                    return 0;
+                }
+                boundary = rs.getLong(1);
+            }
+        }
+        try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ? AND id <= ?" + filter)) {
+            ps.setInt(1, robotId);
+            ps.setLong(2, boundary);
+            return ps.executeUpdate();
+        }
+    }
+
     // ---- plumbing ----
 
     private interface RowMapper<T> {
