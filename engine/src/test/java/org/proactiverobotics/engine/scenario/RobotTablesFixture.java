@@ -1,0 +1,132 @@
+package org.proactiverobotics.engine.scenario;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.List;
+import org.proactiverobotics.db.DatabaseKind;
+import org.proactiverobotics.db.TestDatabase;
+import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.ProactiveEngine;
+import org.proactiverobotics.engine.ScenarioRegistry;
+import org.proactiverobotics.engine.StateStore;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.tables.EngineComments;
+import org.proactiverobotics.engine.tables.JdbcRobotTables;
+import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.SensorRequests;
+import org.proactiverobotics.engine.tables.StrategyTable;
+
+/**
+ * One scenario (or a few) run alone by a real engine over a fresh H2 database with the real
+ * schema, and the robot's half played by hand: write readings, answer requests, read commands.
+ */
+final class RobotTablesFixture implements AutoCloseable {
+
+    static final int ROBOT = 1;
+
+    final TestDatabase db;
+    final JdbcRobotTables tables;
+    final ProactiveEngine engine;
+
+    RobotTablesFixture(String... scenarios) throws SQLException {
+        this.db = TestDatabases.open(DatabaseKind.H2);
+        this.tables = new JdbcRobotTables(db.dataSource(), ROBOT);
+        this.engine = ProactiveEngine.builder()
+                .robotId(ROBOT)
+                .store(StateStore.none())
+                .service(SensorReadings.class, tables)
+                .service(SensorRequests.class, tables)
+                .service(MissionTables.class, tables)
+                .service(StrategyTable.class, tables)
+                .service(EngineComments.class, tables)
+                .service(DriveProfile.class, DriveProfile.DEFAULT)
+                .build();
+        engine.startFresh(ScenarioRegistry.load().startUp(List.of(scenarios)));
+    }
+
+    /** Runs iterations; the scenarios' own rules first run in iteration 3 (StartUp, then meta-rules). */
+    void iterate(int n) {
+        for (int i = 0; i < n; i++) {
+            engine.runIteration();
+        }
+    }
+
+    void gps(long simTimeMs, double x, double y) throws SQLException {
+        update("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (?, ?, ?, ?)", ROBOT, simTimeMs, x, y);
+    }
+
+    void heading(long simTimeMs, double yawRad) throws SQLException {
+        update("INSERT INTO iudata (robot_id, sim_time_ms, roll_rad, pitch_rad, yaw_rad) VALUES (?, ?, 0, 0, ?)",
+                ROBOT, simTimeMs, yawRad);
+    }
+
+    void battery(long simTimeMs, double levelPct, boolean charging) throws SQLException {
+        update("INSERT INTO battery_level (robot_id, sim_time_ms, level_pct, charging) VALUES (?, ?, ?, ?)",
+                ROBOT, simTimeMs, levelPct, charging);
+    }
+
+    /** Eight sensors at the robot's default angles, reading these distances (index 0 rightmost). */
+    void scan(long simTimeMs, double... distances) throws SQLException {
+        double[] degrees = {-90, -45, -20, -8, 8, 20, 45, 90};
+        for (int i = 0; i < degrees.length; i++) {
+            update("INSERT INTO distance_sensor_data (robot_id, sim_time_ms, sensor_index, angle_rad, distance_m, range_m)"
+                    + " VALUES (?, ?, ?, ?, ?, 1.0)", ROBOT, simTimeMs, i, Math.toRadians(degrees[i]), distances[i]);
+        }
+    }
+
+    void checkpoint(int seq, double x, double y) throws SQLException {
+        update("INSERT INTO checkpoints (robot_id, seq, x_m, y_m, radius_m) VALUES (?, ?, ?, ?, 0.25)", ROBOT, seq, x, y);
+    }
+
+    void station(double x, double y, double rechargeToPct) throws SQLException {
+        update("INSERT INTO recharge_station (robot_id, x_m, y_m, radius_m) VALUES (?, ?, ?, 0.35)", ROBOT, x, y);
+        update("INSERT INTO battery_recharged (robot_id, level_pct) VALUES (?, ?)", ROBOT, rechargeToPct);
+    }
+
+    /** The robot's answer: every pending request marked answered at this time. */
+    void answerAll(long simTimeMs) throws SQLException {
+        update("UPDATE sensor_requests SET answered_sim_time_ms = ? WHERE robot_id = ? AND answered_sim_time_ms IS NULL",
+                simTimeMs, ROBOT);
+    }
+
+    List<String> pendingSensors() throws SQLException {
+        return strings("SELECT sensor FROM sensor_requests WHERE robot_id = 1 AND answered_sim_time_ms IS NULL ORDER BY id");
+    }
+
+    List<String> commands() throws SQLException {
+        return strings("SELECT command FROM engine_comments WHERE robot_id = 1 ORDER BY id");
+    }
+
+    List<String> reachedCheckpoints() throws SQLException {
+        return strings("SELECT seq FROM checkpoints WHERE robot_id = 1 AND reached = TRUE ORDER BY seq");
+    }
+
+    private List<String> strings(String sql) throws SQLException {
+        List<String> out = new ArrayList<>();
+        try (Connection c = db.dataSource().getConnection(); PreparedStatement ps = c.prepareStatement(sql);
+             ResultSet rs = ps.executeQuery()) {
+            while (rs.next()) {
+                out.add(rs.getString(1));
+            }
+        }
+        return out;
+    }
+
+    private void update(String sql, Object... params) throws SQLException {
+        try (Connection c = db.dataSource().getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
+            for (int i = 0; i < params.length; i++) {
+                ps.setObject(i + 1, params[i]);
+            }
+            ps.executeUpdate();
+        }
+    }
+
+    @Override
+    public void close() {
+        db.close();
+    }
+}
