@@ -3,6 +3,7 @@ package org.proactiverobotics.app;
 import com.google.gson.Gson;
 import com.google.gson.GsonBuilder;
 import java.io.IOException;
+import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -10,13 +11,17 @@ import java.nio.file.Path;
 import java.sql.SQLException;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
+import java.util.Iterator;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.Progress;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
 import org.proactiverobotics.sim2d.WorldValidationException;
@@ -129,8 +134,8 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }
-        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.0fx real time), "
-                        + "%.1f m, %d collisions, battery min %.1f %%, %d recharges%n",
+        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.0fx real time)%n"
+                        + "  %.1f m travelled, %d collisions, battery min %.1f %%, %d recharges%n",
                 report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(),
                 report.simTimeS(), report.wallTimeS(), report.realTimeFactor(), report.distanceM(),
                 report.collisions(), report.minBattery(), report.recharges());
@@ -147,24 +152,24 @@ public final class RunCommand implements Callable<Integer> {
     /** The strategy names, for --help. */
     static final class StrategyNames implements Iterable<String> {
         @Override
-        public java.util.Iterator<String> iterator() {
+        public Iterator<String> iterator() {
             return Strategies.names().iterator();
         }
     }
 
     /** Adapts the mission's per-step hook to the live progress line. */
     private static final class ProgressPrinter {
-        private final org.proactiverobotics.app.mission.Progress line;
+        private final Progress line;
         private final long startNs = System.nanoTime();
         private final int total;
 
-        ProgressPrinter(java.io.PrintStream out, WorldSpec world) {
-            this.line = new org.proactiverobotics.app.mission.Progress(out);
+        ProgressPrinter(PrintStream out, WorldSpec world) {
+            this.line = new Progress(out);
             this.total = world.checkpoints().size();
         }
 
-        void update(org.proactiverobotics.sim2d.Simulation sim) {
-            var truth = sim.groundTruth();
+        void update(Simulation sim) {
+            GroundTruth truth = sim.groundTruth();
             double wallS = (System.nanoTime() - startNs) / 1e9;
             line.update(sim.simTimeS(), truth.checkpointsReached(), total, truth.batteryPct(), sim.simTimeS() / Math.max(wallS, 1e-9));
         }
