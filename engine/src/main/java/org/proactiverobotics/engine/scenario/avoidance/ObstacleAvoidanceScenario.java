@@ -1,7 +1,7 @@
 package org.proactiverobotics.engine.scenario.avoidance;
 
-import org.proactiverobotics.engine.MetaRule;
-import org.proactiverobotics.engine.RuleContext;
+import java.util.List;
+import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.Scenario;
 
 /** Scenario 3: keeps the robot off obstacles and gets it around them. */
@@ -17,21 +17,9 @@ public final class ObstacleAvoidanceScenario implements Scenario {
         return NAME;
     }
 
+    /** Active from the start: the meta-rule generates these at once. */
     @Override
-    public MetaRule metaRule() {
-        return new Start();
-    }
-
-    /** Starts AvoidObstacles. */
-    public static final class Start extends MetaRule {
-        @Override
-        public String scenario() {
-            return NAME;
-        }
-
-        @Override
-        protected void generateScenarioRules(RuleContext ctx) {
-            ctx.generate(new AvoidObstacles());
-        }
+    public List<Rule> firstRules() {
+        return List.of(new AvoidObstacles());
     }
 }

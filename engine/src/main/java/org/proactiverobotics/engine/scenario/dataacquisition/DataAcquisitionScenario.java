@@ -1,7 +1,7 @@
 package org.proactiverobotics.engine.scenario.dataacquisition;
 
-import org.proactiverobotics.engine.MetaRule;
-import org.proactiverobotics.engine.RuleContext;
+import java.util.List;
+import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.Scenario;
 
 /** Scenario 1: keeps the robot's sensor readings fresh. Always active. */
@@ -15,24 +15,9 @@ public final class DataAcquisitionScenario implements Scenario {
         return NAME;
     }
 
+    /** Active from the start: the meta-rule generates these at once. */
     @Override
-    public MetaRule metaRule() {
-        return new Start();
-    }
-
-    /** Starts GetGPS, GetDS, GetIU and GetBattery. */
-    public static final class Start extends MetaRule {
-        @Override
-        public String scenario() {
-            return NAME;
-        }
-
-        @Override
-        protected void generateScenarioRules(RuleContext ctx) {
-            ctx.generate(new GetGPS());
-            ctx.generate(new GetDS());
-            ctx.generate(new GetIU());
-            ctx.generate(new GetBattery());
-        }
+    public List<Rule> firstRules() {
+        return List.of(new GetGPS(), new GetDS(), new GetIU(), new GetBattery());
     }
 }

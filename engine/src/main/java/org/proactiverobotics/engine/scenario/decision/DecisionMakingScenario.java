@@ -1,7 +1,7 @@
 package org.proactiverobotics.engine.scenario.decision;
 
-import org.proactiverobotics.engine.MetaRule;
-import org.proactiverobotics.engine.RuleContext;
+import java.util.List;
+import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.Scenario;
 
 /** Scenario 5: picks, by priority, the suggestion the robot gets. Started last, so it runs last. */
@@ -15,21 +15,9 @@ public final class DecisionMakingScenario implements Scenario {
         return NAME;
     }
 
+    /** Active from the start: the meta-rule generates these at once. */
     @Override
-    public MetaRule metaRule() {
-        return new Start();
-    }
-
-    /** Starts ReadRobotCommands. */
-    public static final class Start extends MetaRule {
-        @Override
-        public String scenario() {
-            return NAME;
-        }
-
-        @Override
-        protected void generateScenarioRules(RuleContext ctx) {
-            ctx.generate(new ReadRobotCommands());
-        }
+    public List<Rule> firstRules() {
+        return List.of(new ReadRobotCommands());
     }
 }

@@ -1,7 +1,7 @@
 package org.proactiverobotics.engine.scenario.destination;
 
-import org.proactiverobotics.engine.MetaRule;
-import org.proactiverobotics.engine.RuleContext;
+import java.util.List;
+import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.Scenario;
 
 /** Scenario 2: moves the robot to its checkpoints, in order. */
@@ -17,21 +17,9 @@ public final class ReachDestinationScenario implements Scenario {
         return NAME;
     }
 
+    /** Active from the start: the meta-rule generates these at once. */
     @Override
-    public MetaRule metaRule() {
-        return new Start();
-    }
-
-    /** Starts GetCheckpoint. */
-    public static final class Start extends MetaRule {
-        @Override
-        public String scenario() {
-            return NAME;
-        }
-
-        @Override
-        protected void generateScenarioRules(RuleContext ctx) {
-            ctx.generate(new GetCheckpoint());
-        }
+    public List<Rule> firstRules() {
+        return List.of(new GetCheckpoint());
     }
 }
