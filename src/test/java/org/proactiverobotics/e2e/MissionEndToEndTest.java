@@ -10,6 +10,8 @@ import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.proactiverobotics.app.mission.Mission;
+import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.db.DatabaseKind;
@@ -18,6 +20,7 @@ import org.proactiverobotics.db.TestDatabases;
 import org.proactiverobotics.engine.scenario.decision.Strategies;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.sim2d.WorldFiles;
+import org.proactiverobotics.sim2d.WorldSpec;
 
 /** The headless mission end to end: engine, robot controller and simulator through a real database. */
 class MissionEndToEndTest {
@@ -51,6 +54,21 @@ class MissionEndToEndTest {
         MissionReport reference = Missions.onH2("reference-arena").report();
         assertThat(reference.recharges()).isZero();
         assertThat(reference.commandWins()).doesNotContainKey("BatteryMonitor");
+    }
+
+    @Test
+    void aBatteryThatSufficesIsNotRechargedOnTheWay() throws Exception {
+        // The low-battery world's tour costs about 35 % at 2 %/m; 60 % is tight but enough.
+        WorldSpec low = WorldFiles.bundled("low-battery");
+        WorldSpec enough = low.withBattery(new WorldSpec.Battery(60.0, low.battery().drainPerMeter(),
+                low.battery().rechargeTo(), low.battery().rechargeRatePerS()));
+        try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
+            MissionReport report = new Mission(new MissionOptions(enough, db.jdbcUrl(), db.user(), db.password(),
+                    Strategies.SAFETY_FIRST, 1)).run(Files.createTempDirectory("enough-battery-"));
+            assertThat(report.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
+            assertThat(report.recharges()).isZero();
+            assertThat(report.minBattery()).isBetween(0.0, 60.0 - 30.0);
+        }
     }
 
     @Test
