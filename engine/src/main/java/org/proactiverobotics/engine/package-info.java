@@ -24,12 +24,11 @@
  *
  * public final class BatteryScenario implements Scenario {  // listed in META-INF/services/org.proactiverobotics.engine.Scenario
  *     public String name() { return "BatteryMonitor"; }
- *     public MetaRule metaRule() { return new Meta(); }
- *     public static final class Meta extends MetaRule {
- *         public String scenario() { return "BatteryMonitor"; }
- *         protected void generateScenarioRules(RuleContext ctx) { ctx.generate(new BatteryMonitor()); }
- *     }
+ *     public List<Rule> firstRules() { return List.of(new BatteryMonitor()); }  // started by StartScenario
  * }
  * }</pre>
+ *
+ * <p>A scenario that should wait for a context overrides {@code metaRule()} with a
+ * {@link org.proactiverobotics.engine.MetaRule} whose guards and conditions decide when.
  */
 package org.proactiverobotics.engine;
