@@ -121,12 +121,15 @@ CREATE TABLE IF NOT EXISTS sensor_requests (
 
 -- The strategy: the PriorityArray. One row per CommandArray slot; the highest priority is
 -- read first. Changing a row while the engine runs changes the next iteration's decision.
+-- timeout_ms: how long a slot's suggestion is obeyed after it was entered, in simulated ms
+-- (twist_mux style); 0 = only in the iteration it was entered.
 CREATE TABLE IF NOT EXISTS strategy (
   robot_id      INT          NOT NULL,
   slot          INT          NOT NULL,
   scenario      VARCHAR(64)  NOT NULL,
   priority      INT          NOT NULL,
   strategy_name VARCHAR(64)  NOT NULL,
+  timeout_ms    BIGINT       NOT NULL DEFAULT 0,
   updated_at    TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3),
   PRIMARY KEY (robot_id, slot)
 );

@@ -146,8 +146,8 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
     @Override
     public List<Entry> read() {
         return queryAll("strategy",
-                "SELECT slot, scenario, priority, strategy_name FROM strategy WHERE robot_id = ? ORDER BY slot",
-                rs -> new Entry(rs.getInt(1), rs.getString(2), rs.getInt(3), rs.getString(4)));
+                "SELECT slot, scenario, priority, strategy_name, timeout_ms FROM strategy WHERE robot_id = ? ORDER BY slot",
+                rs -> new Entry(rs.getInt(1), rs.getString(2), rs.getInt(3), rs.getString(4), rs.getLong(5)));
     }
 
     @Override
@@ -157,7 +157,8 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
             c.setAutoCommit(false);
             try (PreparedStatement delete = c.prepareStatement("DELETE FROM strategy WHERE robot_id = ?");
                  PreparedStatement insert = c.prepareStatement(
-                         "INSERT INTO strategy (robot_id, slot, scenario, priority, strategy_name) VALUES (?, ?, ?, ?, ?)")) {
+                         "INSERT INTO strategy (robot_id, slot, scenario, priority, strategy_name, timeout_ms)"
+                                 + " VALUES (?, ?, ?, ?, ?, ?)")) {
                 delete.setInt(1, robotId);
                 delete.executeUpdate();
                 for (Entry e : entries) {
@@ -166,6 +167,7 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
                     insert.setString(3, e.scenario());
                     insert.setInt(4, e.priority());
                     insert.setString(5, e.name());
+                    insert.setLong(6, e.timeoutMs());
                     insert.addBatch();
                 }
                 insert.executeBatch();

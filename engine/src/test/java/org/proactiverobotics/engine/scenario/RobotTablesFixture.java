@@ -6,13 +6,18 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.CommandArray;
 import org.proactiverobotics.engine.ProactiveEngine;
 import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.StateStore;
+import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.MissionTables;
@@ -31,21 +36,46 @@ final class RobotTablesFixture implements AutoCloseable {
     final TestDatabase db;
     final JdbcRobotTables tables;
     final ProactiveEngine engine;
+    /** What the engine's rules read and write through: the tables, with a fault to inject. */
+    final FaultyTables faulty;
+    /** Every decision: the suggestions it saw (scenario to command) and the winner. */
+    final List<Decision> decisions = new ArrayList<>();
+
+    /** One decision of ReadRobotCommands. */
+    record Decision(long iteration, Map<String, String> suggestions, String winner, String command) {
+    }
+
+    /** One engine_comments row. */
+    record Sent(long id, long iteration, String scenario, String command) {
+    }
 
     RobotTablesFixture(String... scenarios) throws SQLException {
         this.db = TestDatabases.open(DatabaseKind.H2);
         this.tables = new JdbcRobotTables(db.dataSource(), ROBOT);
+        this.faulty = new FaultyTables(tables);
         this.engine = ProactiveEngine.builder()
                 .robotId(ROBOT)
                 .store(StateStore.none())
-                .service(SensorReadings.class, tables)
-                .service(SensorRequests.class, tables)
-                .service(MissionTables.class, tables)
-                .service(StrategyTable.class, tables)
-                .service(EngineComments.class, tables)
+                .service(SensorReadings.class, faulty)
+                .service(SensorRequests.class, faulty)
+                .service(MissionTables.class, faulty)
+                .service(StrategyTable.class, faulty)
+                .service(EngineComments.class, faulty)
                 .service(DriveProfile.class, DriveProfile.DEFAULT)
+                .service(DecisionObserver.class, this::decided)
                 .build();
         engine.startFresh(ScenarioRegistry.load().startUp(List.of(scenarios)));
+    }
+
+    private void decided(long iteration, CommandArray suggestions, Suggestion winner) {
+        Map<String, String> seen = new TreeMap<>();
+        for (int slot = 0; slot < suggestions.size(); slot++) {
+            Suggestion s = suggestions.get(slot);
+            if (s != null) {
+                seen.put(s.scenario(), s.command());
+            }
+        }
+        decisions.add(new Decision(iteration, seen, winner.scenario(), winner.command()));
     }
 
     /** Runs iterations; the scenarios' own rules first run in iteration 3 (StartUp, then meta-rules). */
@@ -99,6 +129,18 @@ final class RobotTablesFixture implements AutoCloseable {
 
     List<String> commands() throws SQLException {
         return strings("SELECT command FROM engine_comments WHERE robot_id = 1 ORDER BY id");
+    }
+
+    List<Sent> sent() throws SQLException {
+        List<Sent> out = new ArrayList<>();
+        try (Connection c = db.dataSource().getConnection(); PreparedStatement ps = c.prepareStatement(
+                "SELECT id, iteration, scenario, command FROM engine_comments WHERE robot_id = 1 ORDER BY id");
+             ResultSet rs = ps.executeQuery()) {
+            while (rs.next()) {
+                out.add(new Sent(rs.getLong(1), rs.getLong(2), rs.getString(3), rs.getString(4)));
+            }
+        }
+        return out;
     }
 
     List<String> reachedCheckpoints() throws SQLException {
