@@ -360,6 +360,26 @@ public final class ProactiveEngine {
         return lastFailures;
     }
 
+    /** Engine thread only: a linear look through the queues (about ten rules), asked only after a failure. */
+    boolean scheduled(String scenario) {
+        for (Rule r : currentQueue) {
+            if (scenario.equals(r.scenario())) {
+                return true;
+            }
+        }
+        for (Rule r : nextQueue) {
+            if (scenario.equals(r.scenario())) {
+                return true;
+            }
+        }
+        for (Rule r : submitted) {
+            if (scenario.equals(r.scenario())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     List<RuleFailure> previousFailures() {
         return lastFailures;
     }

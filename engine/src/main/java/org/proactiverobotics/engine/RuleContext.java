@@ -66,6 +66,19 @@ public final class RuleContext {
     }
 
     /**
+     * Whether a rule of a scenario is queued to run: still waiting in currentQueue this
+     * iteration, generated into nextQueue, or submitted from outside. A scenario with none is
+     * gone (a failed rule is not regenerated); a fail-safe scenario asks this before restarting
+     * one, so that a scenario still running is never started twice.
+     *
+     * @param scenario a scenario name
+     * @return true when at least one of its rules is queued
+     */
+    public boolean scheduled(String scenario) {
+        return engine.scheduled(Objects.requireNonNull(scenario, "scenario"));
+    }
+
+    /**
      * A service given to the engine's builder (a DAO, a clock, ...).
      *
      * @param type the type it was registered under

@@ -1,14 +1,23 @@
 package org.proactiverobotics.engine.scenario.decision;
 
+import java.util.List;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.RuleFailure;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
-/** Writes one decided command to engine_comments, once; it is not regenerated. */
+/**
+ * Writes one decided command to engine_comments, once; it is not regenerated. It runs in the
+ * iteration after the decision, after the other scenarios: when the scenario whose suggestion
+ * won has failed since (in this iteration), the command is withdrawn and STOP is sent instead,
+ * so that no word of a failing scenario reaches the robot.
+ */
 public final class SendRobotCommand extends Rule {
+
+    private static final String STOP = "STOP";
 
     private String command;
     private String winner;
@@ -38,7 +47,21 @@ public final class SendRobotCommand extends Rule {
     @Override
     protected void actions(RuleContext ctx) {
         long simTimeMs = Math.max(0, ctx.service(SensorReadings.class).newestSimTimeMs(Sensor.GPS));
-        ctx.service(EngineComments.class).send(ctx.iteration(), simTimeMs, winner, command);
+        if (failedThisIteration(ctx, winner)) {
+            ctx.service(EngineComments.class).send(ctx.iteration(), simTimeMs, DecisionMakingScenario.NAME, STOP);
+        } else {
+            ctx.service(EngineComments.class).send(ctx.iteration(), simTimeMs, winner, command);
+        }
+    }
+
+    private static boolean failedThisIteration(RuleContext ctx, String scenario) {
+        List<RuleFailure> failures = ctx.failures();
+        for (int i = failures.size() - 1; i >= 0 && failures.get(i).iteration() == ctx.iteration(); i--) {
+            if (failures.get(i).scenario().equals(scenario)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     @Override
