@@ -9,6 +9,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
+import java.util.function.UnaryOperator;
+import org.proactiverobotics.app.link.EngineTables;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
@@ -57,14 +59,32 @@ final class Missions {
     }
 
     static Run run(String world, TestDatabase db, String strategy, Consumer<Simulation> onStep) {
+        return run(world, db, strategy, onStep, UnaryOperator.identity());
+    }
+
+    /** A run whose engine reads and writes through {@code tables} (a fault injected, a recorder). */
+    static Run run(String world, TestDatabase db, String strategy, Consumer<Simulation> onStep,
+                   UnaryOperator<EngineTables> tables) {
+        MissionOptions options = new MissionOptions(WorldFiles.bundled(world), db.jdbcUrl(), db.user(), db.password(),
+                strategy, 1);
+        return run(options, onStep, tables);
+    }
+
+    /** The run of a bundled world over the in-process direct link: no database. */
+    static Run direct(String world, String strategy) {
+        MissionOptions options = new MissionOptions(WorldFiles.bundled(world), null, null, null, strategy, 1,
+                MissionOptions.Link.DIRECT);
+        return run(options, sim -> { }, UnaryOperator.identity());
+    }
+
+    private static Run run(MissionOptions options, Consumer<Simulation> onStep, UnaryOperator<EngineTables> tables) {
+        String world = options.world().name();
         try {
             Path out = Files.createTempDirectory("mission-" + world + "-");
-            MissionOptions options = new MissionOptions(WorldFiles.bundled(world), db.jdbcUrl(), db.user(), db.password(),
-                    strategy, 1);
-            MissionReport report = new Mission(options).onStep(onStep).run(out);
+            MissionReport report = new Mission(options).onStep(onStep).engineTables(tables).run(out);
             return new Run(report, out);
         } catch (IOException | java.sql.SQLException e) {
-            throw new IllegalStateException("mission " + world + " on " + db.kind() + " could not run", e);
+            throw new IllegalStateException("mission " + world + " over " + options.link() + " could not run", e);
         }
     }
 }

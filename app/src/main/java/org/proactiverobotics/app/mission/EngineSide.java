@@ -2,11 +2,13 @@ package org.proactiverobotics.app.mission;
 
 import java.util.List;
 import javax.sql.DataSource;
+import org.proactiverobotics.app.link.EngineTables;
 import org.proactiverobotics.engine.Algorithm;
 import org.proactiverobotics.engine.IterationSummary;
 import org.proactiverobotics.engine.JdbcStateStore;
 import org.proactiverobotics.engine.ProactiveEngine;
 import org.proactiverobotics.engine.ScenarioRegistry;
+import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
 import org.proactiverobotics.engine.tables.EngineComments;
@@ -23,24 +25,31 @@ import org.proactiverobotics.engine.tables.StrategyTable;
  */
 public final class EngineSide {
 
-    /** The scenarios StartUp creates, in the paper's order 1 → 4 → 2 → 3 → 5. */
+    /**
+     * The scenarios StartUp creates, in the paper's order 1 → 4 → 2 → 3 → 5, with the fail-safe
+     * after every scenario that suggests and before the decision, so that it withdraws a failing
+     * scenario's suggestion in the iteration it failed, before anyone picks it.
+     */
     public static final List<String> SCENARIOS = List.of(
-            "DataAcquisition", "BatteryMonitor", "ReachDestination", "ObstacleAvoidance", "DecisionMaking");
+            "DataAcquisition", "BatteryMonitor", "ReachDestination", "ObstacleAvoidance", "FailSafe", "DecisionMaking");
     /** Prune the engine's history every this many iterations. */
     public static final int PRUNE_EVERY = 100;
     /** Keep this many of the robot's newest commands, answered requests and rule failures. */
     public static final int KEEP_ROWS = 1000;
 
     private final ProactiveEngine engine;
+    private final EngineTables links;
     private final JdbcRobotTables tables;
 
-    private EngineSide(ProactiveEngine engine, JdbcRobotTables tables) {
+    private EngineSide(ProactiveEngine engine, EngineTables links, JdbcRobotTables tables) {
         this.engine = engine;
+        this.links = links;
         this.tables = tables;
     }
 
     /**
-     * Builds the engine of one robot; call {@link #startFresh()} or {@link #resume()} next.
+     * Builds the engine of one robot over the shared database (its tables and its saved state);
+     * call {@link #startFresh()} or {@link #resume()} next.
      *
      * @param dataSource the shared database (schema applied)
      * @param robotId    the robot
@@ -50,20 +59,41 @@ public final class EngineSide {
      */
     public static EngineSide build(DataSource dataSource, int robotId, DriveProfile profile, DecisionObserver observer) {
         JdbcRobotTables tables = new JdbcRobotTables(dataSource, robotId);
+        return build(EngineTables.of(tables), tables, new JdbcStateStore(dataSource), robotId, profile, observer);
+    }
+
+    /**
+     * Builds the engine of one robot over any communication layer (the database, an in-process
+     * link, a wrapped one in a test); call {@link #startFresh()} or {@link #resume()} next.
+     *
+     * @param tables   what the engine's rules read and write
+     * @param store    where the engine's state is saved ({@link StateStore#none()}: nowhere)
+     * @param robotId  the robot
+     * @param profile  the robot's drive as the engine assumes it
+     * @param observer told of every decision, or null
+     * @return the engine side
+     */
+    public static EngineSide build(EngineTables tables, StateStore store, int robotId, DriveProfile profile,
+                                   DecisionObserver observer) {
+        return build(tables, null, store, robotId, profile, observer);
+    }
+
+    private static EngineSide build(EngineTables tables, JdbcRobotTables jdbc, StateStore store, int robotId,
+                                    DriveProfile profile, DecisionObserver observer) {
         ProactiveEngine.Builder builder = ProactiveEngine.builder()
                 .robotId(robotId)
                 .algorithm(Algorithm.LAZY)
-                .store(new JdbcStateStore(dataSource))
-                .service(SensorReadings.class, tables)
-                .service(SensorRequests.class, tables)
-                .service(MissionTables.class, tables)
-                .service(StrategyTable.class, tables)
-                .service(EngineComments.class, tables)
+                .store(store)
+                .service(SensorReadings.class, tables.readings())
+                .service(SensorRequests.class, tables.requests())
+                .service(MissionTables.class, tables.mission())
+                .service(StrategyTable.class, tables.strategy())
+                .service(EngineComments.class, tables.comments())
                 .service(DriveProfile.class, profile);
         if (observer != null) {
             builder.service(DecisionObserver.class, observer);
         }
-        return new EngineSide(builder.build(), tables);
+        return new EngineSide(builder.build(), tables, jdbc);
     }
 
     /** Starts from StartUp, discarding any saved state of this robot's engine. */
@@ -90,7 +120,7 @@ public final class EngineSide {
     public IterationSummary iterate() {
         IterationSummary summary = engine.runIteration();
         if (engine.iteration() % PRUNE_EVERY == 0) {
-            tables.pruneHistory(KEEP_ROWS);
+            links.pruneHistory().applyAsInt(KEEP_ROWS);
         }
         return summary;
     }
@@ -100,8 +130,13 @@ public final class EngineSide {
         return engine;
     }
 
-    /** @return the robot's tables as the engine sees them */
+    /** @return the robot's tables as the engine sees them, over the database; null when built over another layer */
     public JdbcRobotTables tables() {
         return tables;
+    }
+
+    /** @return what the engine's rules read and write, whatever the layer */
+    public EngineTables links() {
+        return links;
     }
 }

@@ -11,10 +11,16 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.function.Consumer;
+import java.util.function.UnaryOperator;
+import org.proactiverobotics.app.link.DirectEngineTables;
+import org.proactiverobotics.app.link.DirectLink;
+import org.proactiverobotics.app.link.EngineTables;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.CommandArray;
 import org.proactiverobotics.engine.IterationSummary;
+import org.proactiverobotics.engine.JdbcStateStore;
+import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.scenario.decision.Strategies;
@@ -30,8 +36,10 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * One headless mission in one process, in lockstep: each control step the robot answers the
  * engine's sensor requests, the engine runs one iteration, the robot reads the newest command
  * and sets its wheels, and the world steps. Both sides talk only through the database, each
- * with a pool of its own, exactly as two processes would. Deterministic: the same world and
- * seed give the same run.
+ * with a pool of its own, exactly as two processes would; or, with
+ * {@link MissionOptions.Link#DIRECT}, through an in-process link with the same semantics and no
+ * database (what the middleware costs is the difference). Deterministic: the same world and
+ * seed give the same run, whichever the layer.
  */
 public final class Mission {
 
@@ -40,6 +48,7 @@ public final class Mission {
     private final List<SvgRenderer.Marker> markers = new ArrayList<>();
     private final Map<String, Long> commandWins = new TreeMap<>();
     private Consumer<Simulation> stepHook = sim -> { };
+    private UnaryOperator<EngineTables> engineTables = UnaryOperator.identity();
     private TraceWriter trace;
     private String decidedScenario = "none";
     private String drivingScenario = "none";
@@ -63,6 +72,18 @@ public final class Mission {
     }
 
     /**
+     * Wraps what the engine's rules read and write before the engine is built: fault injection
+     * in tests (a table that throws for one scenario), a recorder, ...
+     *
+     * @param decorator takes the engine's tables, returns what the engine gets
+     * @return this mission
+     */
+    public Mission engineTables(UnaryOperator<EngineTables> decorator) {
+        this.engineTables = decorator;
+        return this;
+    }
+
+    /**
      * Runs the mission to its end and writes report.json's content (returned), trace.jsonl and
      * trajectory.svg into the output directory.
      *
@@ -72,27 +93,57 @@ public final class Mission {
      * @throws IOException  when the output cannot be written
      */
     public MissionReport run(Path outDir) throws SQLException, IOException {
+        if (options.link() == MissionOptions.Link.DIRECT) {
+            return runDirect(outDir);
+        }
         WorldSpec world = options.world();
         int robotId = options.robotId();
         try (HikariDataSource enginePool = Databases.pool(options.jdbcUrl(), options.user(), options.password())) {
             Schema.apply(enginePool);
             clearRobotRows(enginePool, robotId);
-            new JdbcRobotTables(enginePool, robotId).write(Strategies.named(options.strategy()));
+            JdbcRobotTables tables = new JdbcRobotTables(enginePool, robotId);
+            tables.write(Strategies.named(options.strategy()));
 
             Simulation sim = new Simulation(world);
-            EngineSide engine = EngineSide.build(enginePool, robotId,
-                    new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM()), this::decided);
+            EngineSide engine = EngineSide.build(engineTables.apply(EngineTables.of(tables)), new JdbcStateStore(enginePool),
+                    robotId, profile(world), this::decided);
             engine.startFresh();
 
-            try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"));
-                 ProactiveController controller = ProactiveController.connect(sim, options.jdbcUrl(), options.user(),
-                         options.password(), RobotConfig.defaults(robotId))) {
-                this.trace = traceWriter;
-                MissionReport report = loop(sim, engine, controller);
-                writePicture(world, sim, outDir.resolve("trajectory.svg"));
-                return report;
+            try (ProactiveController controller = ProactiveController.connect(sim, options.jdbcUrl(), options.user(),
+                    options.password(), RobotConfig.defaults(robotId))) {
+                return run(sim, engine, controller, outDir);
             }
         }
+    }
+
+    /** The same mission over an in-process link: no database, the engine's state not saved. */
+    private MissionReport runDirect(Path outDir) throws IOException {
+        WorldSpec world = options.world();
+        int robotId = options.robotId();
+        DirectLink link = new DirectLink();
+        DirectEngineTables tables = link.engine(robotId);
+        tables.write(Strategies.named(options.strategy()));
+        Simulation sim = new Simulation(world);
+        EngineSide engine = EngineSide.build(engineTables.apply(EngineTables.of(tables)), StateStore.none(), robotId,
+                profile(world), this::decided);
+        engine.startFresh();
+        try (ProactiveController controller = new ProactiveController(sim, link, RobotConfig.defaults(robotId))) {
+            return run(sim, engine, controller, outDir);
+        }
+    }
+
+    private MissionReport run(Simulation sim, EngineSide engine, ProactiveController controller, Path outDir)
+            throws IOException {
+        try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"))) {
+            this.trace = traceWriter;
+            MissionReport report = loop(sim, engine, controller);
+            writePicture(options.world(), sim, outDir.resolve("trajectory.svg"));
+            return report;
+        }
+    }
+
+    private static DriveProfile profile(WorldSpec world) {
+        return new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM());
     }
 
     private MissionReport loop(Simulation sim, EngineSide engine, ProactiveController controller) {
@@ -145,7 +196,7 @@ public final class Mission {
         double wallS = (System.nanoTime() - start) / 1e9;
         double simS = sim.simTimeMs() / 1000.0;
         return new MissionReport(world.name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, options.strategy(),
-                databaseKind(options.jdbcUrl()), truth.checkpointsReached(), truth.checkpointsTotal(), simS,
+                options.link() == MissionOptions.Link.DIRECT ? "direct" : databaseKind(options.jdbcUrl()), truth.checkpointsReached(), truth.checkpointsTotal(), simS,
                 round(wallS, 3), round(simS / Math.max(wallS, 1e-9), 1), steps, engine.engine().iteration(),
                 round(truth.distanceM(), 3), truth.collisions(), round(truth.minClearanceM(), 4),
                 round(truth.minBatteryPct(), 2), round(truth.batteryPct(), 2), truth.recharges(),
@@ -168,6 +219,7 @@ public final class Mission {
                 .colour("ObstacleAvoidance", "#d62728")
                 .colour("BatteryMonitor", "#2ca02c")
                 .colour("DecisionMaking", "#7f7f7f")
+                .colour("FailSafe", "#ff7f0e")
                 .colour("none", "#7f7f7f")
                 .title(world.name() + " — path coloured by the scenario whose command was driving");
         for (SvgRenderer.Marker m : markers) {

@@ -1,0 +1,46 @@
+package org.proactiverobotics.app.link;
+
+import java.util.Objects;
+import java.util.function.IntUnaryOperator;
+import org.proactiverobotics.engine.tables.EngineComments;
+import org.proactiverobotics.engine.tables.JdbcRobotTables;
+import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.SensorRequests;
+import org.proactiverobotics.engine.tables.StrategyTable;
+
+/**
+ * The engine side of one robot's communication layer: the table interfaces the scenarios ask
+ * the engine for, and how the engine's own history (commands sent, requests answered) is kept
+ * bounded. One record whatever the layer, so that a test can wrap one of them (fault injection).
+ *
+ * @param readings     the newest sensor readings
+ * @param requests     the requests for fresh data
+ * @param mission      checkpoints, station, recharge level
+ * @param strategy     the PriorityArray and time-outs
+ * @param comments     where decided commands go
+ * @param pruneHistory keeps the newest n rows of the engine's history; returns how many went
+ */
+public record EngineTables(SensorReadings readings, SensorRequests requests, MissionTables mission,
+                           StrategyTable strategy, EngineComments comments, IntUnaryOperator pruneHistory) {
+
+    /** Checks that every part is there. */
+    public EngineTables {
+        Objects.requireNonNull(readings, "readings");
+        Objects.requireNonNull(requests, "requests");
+        Objects.requireNonNull(mission, "mission");
+        Objects.requireNonNull(strategy, "strategy");
+        Objects.requireNonNull(comments, "comments");
+        Objects.requireNonNull(pruneHistory, "pruneHistory");
+    }
+
+    /** @return the engine side over the shared database */
+    public static EngineTables of(JdbcRobotTables tables) {
+        return new EngineTables(tables, tables, tables, tables, tables, tables::pruneHistory);
+    }
+
+    /** @return the engine side of an in-process link */
+    public static EngineTables of(DirectEngineTables tables) {
+        return new EngineTables(tables, tables, tables, tables, tables, tables::pruneHistory);
+    }
+}

@@ -1,0 +1,56 @@
+package org.proactiverobotics.e2e;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.junit.jupiter.api.Test;
+import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.Outcome;
+import org.proactiverobotics.db.DatabaseKind;
+import org.proactiverobotics.db.TestDatabase;
+import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
+import org.proactiverobotics.engine.scenario.decision.Strategies;
+
+/** The fail-safe scenario end to end: a scenario's rule throws in the middle of a mission. */
+class FailSafeEndToEndTest {
+
+    @Test
+    void obstacleAvoidanceFailingNearAnObstacleSendsNoAvoidanceCommandStopsTheRobotAndComesBack() throws Exception {
+        double failFromS = 4.5; // avoidance is busy with the first obstacle from about 4 s to 9 s
+        double failUntilS = 5.5;
+        AtomicBoolean failing = new AtomicBoolean();
+        FaultInjection fault = new FaultInjection(ObstacleAvoidanceScenario.class, failing::get);
+        try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
+            Missions.Run run = Missions.run("reference-arena", db, Strategies.SAFETY_FIRST,
+                    sim -> failing.set(sim.simTimeS() >= failFromS && sim.simTimeS() < failUntilS), fault);
+            MissionReport report = run.report();
+
+            assertThat(report.ruleFailures()).isPositive();
+            List<FaultInjection.Sent> sent = fault.sent;
+            long firstFailureMs = (long) (failFromS * 1000);
+            // From the failure until avoidance is back: not one avoidance command, and STOP from the fail-safe.
+            FaultInjection.Sent firstAvoidanceAgain = sent.stream()
+                    .filter(s -> s.simTimeMs() >= firstFailureMs && s.scenario().equals("ObstacleAvoidance"))
+                    .findFirst().orElseThrow();
+            List<FaultInjection.Sent> window = sent.stream()
+                    .filter(s -> s.simTimeMs() >= firstFailureMs && s.iteration() < firstAvoidanceAgain.iteration()).toList();
+            assertThat(firstAvoidanceAgain.simTimeMs()).as("back only once the fault is gone").isGreaterThan((long) (failUntilS * 1000));
+            assertThat(window).isNotEmpty().allSatisfy(s -> assertThat(s.command()).as(s.toString()).isEqualTo("STOP"));
+            assertThat(window).anySatisfy(s -> assertThat(s.scenario()).isEqualTo("FailSafe"));
+            assertThat(report.commandWins()).containsKey("FailSafe");
+            // The robot was safe, and the restarted avoidance took it around the obstacle to the end.
+            assertThat(report.collisions()).isZero();
+            assertThat(report.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
+            assertThat(run.trace()).anySatisfy(t -> assertThat(t.getAsJsonObject("suggestions").has("FailSafe")).isTrue());
+        }
+    }
+
+    @Test
+    void withoutFailuresTheFailSafeNeverActs() {
+        MissionReport report = Missions.onH2("cluttered-arena").report();
+        assertThat(report.ruleFailures()).isZero();
+        assertThat(report.commandWins()).doesNotContainKey("FailSafe");
+    }
+}
