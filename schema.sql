@@ -164,3 +164,32 @@ CREATE TABLE IF NOT EXISTS rule_failures (
   created_at TIMESTAMP(3)  NOT NULL DEFAULT CURRENT_TIMESTAMP(3),
   INDEX idx_failures_iteration (robot_id, iteration)
 );
+
+-- ======================================================================================
+-- The lockstep handshake of the two processes (the `robot` and `engine` commands)
+-- ======================================================================================
+-- Two tables, one per writer, so that each side's database user writes only its own.
+
+-- The robot's clock, written only by the robot. One robot process is one run (run_id); step is
+-- the control step whose sensing is done (0 = the run has started, nothing sensed yet);
+-- timing is 'sync' (the robot waits for engine_clock before acting) or 'realtime';
+-- state is 'RUNNING', 'FINISHED' or 'STOPPED'.
+CREATE TABLE IF NOT EXISTS robot_clock (
+  robot_id    INT          NOT NULL PRIMARY KEY,
+  run_id      BIGINT       NOT NULL,
+  step        BIGINT       NOT NULL,
+  sim_time_ms BIGINT       NOT NULL,
+  timing      VARCHAR(16)  NOT NULL,
+  state       VARCHAR(16)  NOT NULL,
+  updated_at  TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3)
+);
+
+-- The engine's clock, written only by the engine: the robot run it serves, the last robot step
+-- it ran an iteration for (0 = run acknowledged, its engine rows reset), and that iteration.
+CREATE TABLE IF NOT EXISTS engine_clock (
+  robot_id   INT          NOT NULL PRIMARY KEY,
+  run_id     BIGINT       NOT NULL,
+  step       BIGINT       NOT NULL,
+  iteration  BIGINT       NOT NULL,
+  updated_at TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3)
+);

@@ -6,6 +6,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import java.util.function.Consumer;
 import org.proactiverobotics.robot.link.BatteryReading;
 import org.proactiverobotics.robot.link.CommandRecord;
 import org.proactiverobotics.robot.link.DistanceReading;
@@ -53,6 +54,7 @@ public class ProactiveController extends RobotSuperclass {
     private boolean seeded;
     private boolean startBatteryWritten;
     private long senseCalls;
+    private Consumer<CommandRecord> commandListener = record -> { };
 
     /**
      * A controller over a link someone else owns (the app's pool, an in-process link...).
@@ -87,6 +89,18 @@ public class ProactiveController extends RobotSuperclass {
                                               RobotConfig config) {
         HikariDataSource pool = RobotPool.open(jdbcUrl, user, password);
         return new ProactiveController(simulation, new JdbcRobotLink(pool), config, pool);
+    }
+
+    /**
+     * Tells a listener of every new valid command the robot executes (a report counting the
+     * winning scenarios, say).
+     *
+     * @param listener called on the controller's thread
+     * @return this controller
+     */
+    public ProactiveController onCommand(Consumer<CommandRecord> listener) {
+        this.commandListener = java.util.Objects.requireNonNull(listener, "listener");
+        return this;
     }
 
     /** @return the current mode */
@@ -224,6 +238,7 @@ public class ProactiveController extends RobotSuperclass {
         lastExecutedCommandId = record.id();
         stats.commandsExecuted++;
         switchTo(command);
+        commandListener.accept(record);
     }
 
     private void switchTo(Command command) {

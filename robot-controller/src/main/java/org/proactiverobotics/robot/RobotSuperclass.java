@@ -41,6 +41,11 @@ public abstract class RobotSuperclass implements AutoCloseable {
     private final Backoff backoff;
     private final AutoCloseable owned;
     private volatile boolean stopRequested;
+    private long loopSteps;
+    private long senseNanos;
+    private long waitNanos;
+    private long actNanos;
+    private long physicsNanos;
     private long outageStartNanos;
     private long failedAtOutageStart;
     private long skippedAtOutageStart;
@@ -81,18 +86,60 @@ public abstract class RobotSuperclass implements AutoCloseable {
      * @return the simulated time at the end, ms
      */
     public long run() {
+        return run(StepGate.NONE);
+    }
+
+    /**
+     * {@link #run()} with a gate between sensing and acting: in lockstep with an engine process
+     * ({@link Lockstep}) the robot acts on step k only once the engine has served step k, so the
+     * two processes interleave exactly as the one-process mission does.
+     *
+     * @param gate told of each sensed and each simulated step; may hold the robot back
+     * @return the simulated time at the end, ms
+     */
+    public long run(StepGate gate) {
         LOG.info("robot {}: running (time step {} ms, real-time factor {})", config.robotId(),
                 simulation.timeStepMs(), config.realTimeFactor());
         long startNanos = System.nanoTime();
         long startSimMs = simulation.simTimeMs();
+        long step = 0;
         while (!stopRequested && !missionOver()) {
-            controlStep();
+            long t0 = System.nanoTime();
+            sense();
+            long t1 = System.nanoTime();
+            if (!gate.sensed(step + 1, simulation.simTimeMs())) {
+                break;
+            }
+            step++;
+            long t2 = System.nanoTime();
+            act();
+            stats.controlSteps++;
+            long t3 = System.nanoTime();
             simulation.step();
+            long t4 = System.nanoTime();
+            senseNanos += t1 - t0;
+            waitNanos += t2 - t1;
+            actNanos += t3 - t2;
+            physicsNanos += t4 - t3;
+            loopSteps++;
+            gate.stepped(step, simulation.simTimeMs());
             pace(startNanos, simulation.simTimeMs() - startSimMs);
         }
         robot.setWheelSpeeds(0.0, 0.0);
         LOG.info("robot {}: stopped at {} ms simulated; {}", config.robotId(), simulation.simTimeMs(), stats());
         return simulation.simTimeMs();
+    }
+
+    /** @return where the time of {@link #run(StepGate)} went so far */
+    public LoopTimes loopTimes() {
+        double n = Math.max(1, loopSteps);
+        return new LoopTimes(loopSteps, senseNanos / 1e6 / n, waitNanos / 1e6 / n, actNanos / 1e6 / n,
+                physicsNanos / 1e6 / n);
+    }
+
+    /** @return whether {@link #requestStop()} was called */
+    public boolean stopRequested() {
+        return stopRequested;
     }
 
     /** Asks {@link #run()} to return after the current step; safe from any thread. */
@@ -101,13 +148,14 @@ public abstract class RobotSuperclass implements AutoCloseable {
     }
 
     /**
-     * When {@link #run()} ends on its own. This default: every checkpoint reached (ground truth),
-     * or the world's time limit passed.
+     * When {@link #run()} ends on its own. This default, as the one-process mission: every
+     * checkpoint reached (ground truth), the battery flat, or the world's time limit passed.
      *
      * @return whether the mission is over
      */
     protected boolean missionOver() {
-        return simulation.groundTruth().allCheckpointsReached() || simulation.timeLimitReached();
+        var truth = simulation.groundTruth();
+        return truth.allCheckpointsReached() || truth.batteryPct() <= 0.0 || simulation.timeLimitReached();
     }
 
     /** @return the simulated time now, ms */

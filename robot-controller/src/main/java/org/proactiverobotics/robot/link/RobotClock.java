@@ -1,0 +1,51 @@
+package org.proactiverobotics.robot.link;
+
+import java.util.Optional;
+
+/**
+ * The robot's side of the lockstep handshake with an engine process (tables
+ * {@code robot_clock}, written by the robot, and {@code engine_clock}, read by it). The JDBC
+ * implementation is {@link JdbcRobotClock}.
+ */
+public interface RobotClock {
+
+    /**
+     * What the engine last published for a robot.
+     *
+     * @param runId     the robot run it serves
+     * @param step      the last robot step it ran an iteration for (0: the run is acknowledged)
+     * @param iteration that iteration's number
+     */
+    record EngineTick(long runId, long step, long iteration) {
+    }
+
+    /**
+     * Starts a new run of this robot: deletes its readings of earlier runs and publishes step 0 of
+     * a new run id (larger than any before), in one transaction.
+     *
+     * @param robotId the robot
+     * @param timing  the timing mode ("sync" or "realtime")
+     * @return the new run id
+     * @throws LinkException when nothing could be done
+     */
+    long beginRun(int robotId, String timing) throws LinkException;
+
+    /**
+     * Publishes the robot's progress.
+     *
+     * @param robotId   the robot
+     * @param runId     its run
+     * @param step      the control step whose sensing is done
+     * @param simTimeMs the simulated time of that sensing, ms
+     * @param state     RUNNING, FINISHED or STOPPED
+     * @throws LinkException when it could not be written
+     */
+    void publish(int robotId, long runId, long step, long simTimeMs, String state) throws LinkException;
+
+    /**
+     * @param robotId the robot
+     * @return what the engine last published for it, or empty when no engine ever did
+     * @throws LinkException when it could not be read
+     */
+    Optional<EngineTick> engineTick(int robotId) throws LinkException;
+}
