@@ -15,6 +15,10 @@ import picocli.CommandLine.Command;
                 CommandLine.HelpCommand.class,
                 ValidateCommand.class,
                 RunCommand.class,
+                EngineCommand.class,
+                RobotCommand.class,
+                StrategyCommand.class,
+                DbCommand.class,
         })
 public final class Main implements Runnable {
 

@@ -7,5 +7,7 @@ public enum Outcome {
     /** The world's maxSimTimeS ran out first. */
     TIME_LIMIT,
     /** The battery ran flat. */
-    BATTERY_DEPLETED
+    BATTERY_DEPLETED,
+    /** The robot process was stopped (SIGTERM / Ctrl-C) before the mission ended. */
+    STOPPED
 }

@@ -1,0 +1,142 @@
+package org.proactiverobotics.app;
+
+import com.zaxxer.hikari.HikariDataSource;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.proactiverobotics.app.deploy.DatabaseWait;
+import org.proactiverobotics.app.deploy.DbOptions;
+import org.proactiverobotics.app.deploy.EngineClock;
+import org.proactiverobotics.app.deploy.EngineLoop;
+import org.proactiverobotics.app.deploy.Heartbeat;
+import org.proactiverobotics.app.deploy.ServiceLogging;
+import org.proactiverobotics.app.deploy.ShutdownSignal;
+import org.proactiverobotics.app.mission.EngineSide;
+import org.proactiverobotics.db.Databases;
+import org.proactiverobotics.engine.CorruptStateException;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.scenario.decision.Strategies;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code engine}: the Proactive Engine process of the paper's deployment (DESIGN section 7): the
+ * robot's scenarios against a shared database, resuming from the saved state, serving the runs
+ * of a robot process until stopped (SIGTERM / Ctrl-C: the current iteration ends, its state is
+ * saved, exit 0).
+ */
+@Command(name = "engine",
+        mixinStandardHelpOptions = true,
+        description = {"Runs the proactive engine of one robot against a shared database until stopped.",
+                "Serves the runs of a `robot` process: one iteration per robot step (sync timing) or one per period (realtime).",
+                "Resumes from the saved state; SIGTERM / Ctrl-C end the current iteration, save and exit 0.",
+                "Exit codes: 0 stopped, 2 bad input, 3 database not usable within --wait-s or saved state unreadable."})
+public final class EngineCommand implements Callable<Integer> {
+
+    @Mixin
+    private DbOptions db;
+
+    @Option(names = "--robot-id", paramLabel = "N", defaultValue = "1", description = "The robot's id in every table. Default: ${DEFAULT-VALUE}.")
+    private int robotId;
+
+    @Option(names = "--strategy", paramLabel = "NAME", defaultValue = Strategies.SAFETY_FIRST,
+            completionCandidates = RunCommand.StrategyNames.class,
+            description = "The strategy written when the robot has none yet (${COMPLETION-CANDIDATES}); a strategy "
+                    + "changed with the `strategy` command survives restarts. Default: ${DEFAULT-VALUE}.")
+    private String strategy;
+
+    @Option(names = "--fresh", description = "Discard the saved state and start the scenarios afresh (default: resume).")
+    private boolean fresh;
+
+    @Option(names = "--max-speed-mps", paramLabel = "V", defaultValue = "0.5",
+            description = "The robot's top wheel speed as the engine assumes it, m/s. Default: ${DEFAULT-VALUE}.")
+    private double maxSpeedMps;
+
+    @Option(names = "--axle-width-m", paramLabel = "W", defaultValue = "0.24",
+            description = "The distance between the robot's wheels, m. Default: ${DEFAULT-VALUE}.")
+    private double axleWidthM;
+
+    @Option(names = "--period-ms", paramLabel = "MS", defaultValue = "32",
+            description = "Real-time timing: one iteration every this many ms. Default: ${DEFAULT-VALUE}.")
+    private long periodMs;
+
+    @Option(names = "--log-every", paramLabel = "N", defaultValue = "500",
+            description = "One INFO line every N iterations (details at DEBUG: PROACTIVE_LOG_LEVEL=DEBUG). Default: ${DEFAULT-VALUE}.")
+    private long logEvery;
+
+    @Option(names = "--heartbeat", paramLabel = "FILE",
+            description = "A file touched every few seconds while the loop runs (for a container health check).")
+    private Path heartbeat;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        String problem = problem();
+        if (problem != null) {
+            err.println(problem);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        ServiceLogging.statusLines();
+        ShutdownSignal signal = ShutdownSignal.install();
+        int code = serve(signal, err);
+        signal.finished(code);
+        return code;
+    }
+
+    private int serve(ShutdownSignal signal, PrintWriter err) {
+        try {
+            if (!DatabaseWait.await(db, "engine_clock", signal::stopRequested)) {
+                return 0;
+            }
+        } catch (DatabaseWait.Unreachable e) {
+            err.println(e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
+        try (HikariDataSource pool = Databases.pool(db.url(), db.user(), db.password())) {
+            EngineSide side = EngineSide.build(pool, robotId, new DriveProfile(maxSpeedMps, axleWidthM), null);
+            EngineLoop loop = new EngineLoop(side, new EngineClock(pool, robotId), robotId,
+                    new EngineLoop.Options(strategy, fresh, periodMs, logEvery), signal::stopRequested, new Heartbeat(heartbeat));
+            loop.run();
+            return 0;
+        } catch (CorruptStateException e) {
+            err.println("the saved engine state cannot be read: " + e.getMessage()
+                    + "\n(start with --fresh to discard it)");
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
+    }
+
+    private String problem() {
+        String dbProblem = db.problem();
+        if (dbProblem != null) {
+            return dbProblem;
+        }
+        if (robotId < 0) {
+            return "--robot-id must be >= 0: " + robotId;
+        }
+        if (!Strategies.names().contains(strategy)) {
+            return "unknown strategy '" + strategy + "'; known: " + String.join(", ", Strategies.names());
+        }
+        if (!(maxSpeedMps > 0) || Double.isInfinite(maxSpeedMps)) {
+            return "--max-speed-mps must be a positive number: " + maxSpeedMps;
+        }
+        if (!(axleWidthM > 0) || Double.isInfinite(axleWidthM)) {
+            return "--axle-width-m must be a positive number: " + axleWidthM;
+        }
+        if (periodMs < 1) {
+            return "--period-ms must be >= 1: " + periodMs;
+        }
+        if (logEvery < 1) {
+            return "--log-every must be >= 1: " + logEvery;
+        }
+        return null;
+    }
+}

@@ -1,0 +1,159 @@
+package org.proactiverobotics.app;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.proactiverobotics.app.deploy.DatabaseWait;
+import org.proactiverobotics.app.deploy.DbOptions;
+import org.proactiverobotics.app.deploy.Heartbeat;
+import org.proactiverobotics.app.deploy.RobotProcess;
+import org.proactiverobotics.app.deploy.ServiceLogging;
+import org.proactiverobotics.app.deploy.ShutdownSignal;
+import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.robot.Lockstep;
+import org.proactiverobotics.sim2d.WorldFiles;
+import org.proactiverobotics.sim2d.WorldSpec;
+import org.proactiverobotics.sim2d.WorldValidationException;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code robot}: the simulated robot and its {@code ProactiveController} as a process of their
+ * own (the Webots controller of the paper's deployment): seeds the mission rows, runs the
+ * mission with an engine process through the shared database, writes report.json and exits
+ * with the codes of DESIGN section 7.
+ */
+@Command(name = "robot",
+        mixinStandardHelpOptions = true,
+        description = {"Runs the simulated robot and its controller against a shared database, driven by an `engine` process.",
+                "Sync timing (default): the robot acts on each step only once the engine has served it: the same run as `run`.",
+                "Realtime timing: the robot steps on the wall clock, the engine iterates on its own period.",
+                "Writes report.json to the output directory.",
+                "Exit codes: 0 mission accomplished, 1 mission failed or stopped, 2 bad input, 3 database not usable within --wait-s."})
+public final class RobotCommand implements Callable<Integer> {
+
+    @Option(names = "--world", paramLabel = "FILE", required = true, description = "The world file (JSON).")
+    private Path world;
+
+    @Mixin
+    private DbOptions db;
+
+    @Option(names = "--robot-id", paramLabel = "N", defaultValue = "1", description = "The robot's id in every table. Default: ${DEFAULT-VALUE}.")
+    private int robotId;
+
+    @Option(names = "--out", paramLabel = "DIR",
+            description = "Output directory for report.json. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
+    private Path out;
+
+    @Option(names = "--timing", paramLabel = "MODE", defaultValue = "sync",
+            description = "sync (one engine iteration per control step, deterministic) or realtime. Default: ${DEFAULT-VALUE}.")
+    private String timing;
+
+    @Option(names = "--real-time-factor", paramLabel = "F", defaultValue = "1.0",
+            description = "Realtime timing: simulated seconds per wall second (2 = twice as fast). Default: ${DEFAULT-VALUE}.")
+    private double realTimeFactor;
+
+    @Option(names = "--log-every", paramLabel = "N", defaultValue = "500",
+            description = "One INFO line every N control steps. Default: ${DEFAULT-VALUE}.")
+    private long logEvery;
+
+    @Option(names = "--heartbeat", paramLabel = "FILE",
+            description = "A file touched every few seconds while the robot steps (for a container health check).")
+    private Path heartbeat;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter stdout = spec.commandLine().getOut();
+        WorldSpec worldSpec;
+        try {
+            worldSpec = WorldFiles.load(world);
+        } catch (WorldValidationException e) {
+            err.println(world + ": invalid world file:");
+            e.problems().forEach(err::println);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        String problem = problem();
+        if (problem != null) {
+            err.println(problem);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        Path outDir = out != null ? out : Path.of("runs", worldSpec.name() + "-"
+                + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        try {
+            Files.createDirectories(outDir);
+        } catch (IOException e) {
+            err.println("cannot create the output directory " + outDir + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        ServiceLogging.statusLines();
+        ShutdownSignal signal = ShutdownSignal.install();
+        int code = runMission(worldSpec, outDir, signal, stdout, err);
+        signal.finished(code);
+        return code;
+    }
+
+    private int runMission(WorldSpec worldSpec, Path outDir, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
+        Lockstep.Timing mode = Lockstep.Timing.valueOf(timing.toUpperCase(Locale.ROOT));
+        stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", robotId, worldSpec.name(), db.url(), mode.label());
+        stdout.flush();
+        MissionReport report;
+        try {
+            report = new RobotProcess(new RobotProcess.Options(worldSpec, db, robotId, mode, realTimeFactor, logEvery,
+                    new Heartbeat(heartbeat)), signal).run();
+        } catch (DatabaseWait.Unreachable e) {
+            err.println(e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
+        try {
+            RunCommand.writeReport(report, outDir.resolve("report.json"));
+        } catch (IOException e) {
+            err.println("cannot write the report in " + outDir + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
+        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s, %d steps, %d engine iterations, "
+                        + "%.1f m, %d collisions, battery min %.1f %%, %d recharges%n",
+                report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(), report.simTimeS(),
+                report.wallTimeS(), report.controlSteps(), report.engineIterations(), report.distanceM(),
+                report.collisions(), report.minBattery(), report.recharges());
+        stdout.println("Report: " + outDir.resolve("report.json"));
+        stdout.flush();
+        return report.success() ? 0 : Main.EXIT_MISSION_FAILED;
+    }
+
+    private String problem() {
+        String dbProblem = db.problem();
+        if (dbProblem != null) {
+            return dbProblem;
+        }
+        if (robotId < 0) {
+            return "--robot-id must be >= 0: " + robotId;
+        }
+        if (!timing.equals("sync") && !timing.equals("realtime")) {
+            return "--timing must be sync or realtime: " + timing;
+        }
+        if (!(realTimeFactor > 0) || Double.isInfinite(realTimeFactor)) {
+            return "--real-time-factor must be a positive number: " + realTimeFactor;
+        }
+        if (logEvery < 1) {
+            return "--log-every must be >= 1: " + logEvery;
+        }
+        return null;
+    }
+}

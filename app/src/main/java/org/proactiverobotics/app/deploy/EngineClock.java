@@ -1,0 +1,131 @@
+package org.proactiverobotics.app.deploy;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.util.Optional;
+import javax.sql.DataSource;
+
+/**
+ * The engine's side of the lockstep handshake (schema.sql: {@code robot_clock}, read;
+ * {@code engine_clock}, written) and the reset of the engine's rows when a new robot run starts.
+ * Runs with the engine user's grants.
+ */
+public final class EngineClock {
+
+    /**
+     * What the robot last published.
+     *
+     * @param runId     its run (one robot process)
+     * @param step      the control step whose sensing is done
+     * @param simTimeMs the simulated time of that sensing, ms
+     * @param timing    "sync" or "realtime"
+     * @param state     RUNNING, FINISHED or STOPPED
+     */
+    public record RobotTick(long runId, long step, long simTimeMs, String timing, String state) {
+        /** @return whether the robot waits for one iteration per step */
+        public boolean sync() {
+            return "sync".equals(timing);
+        }
+
+        /** @return whether the run goes on */
+        public boolean running() {
+            return "RUNNING".equals(state);
+        }
+    }
+
+    /**
+     * What the engine last published.
+     *
+     * @param runId     the run it serves
+     * @param step      the last robot step it ran an iteration for
+     * @param iteration that iteration
+     */
+    public record Served(long runId, long step, long iteration) {
+    }
+
+    private final DataSource dataSource;
+    private final int robotId;
+
+    /**
+     * @param dataSource the shared database
+     * @param robotId    the robot
+     */
+    public EngineClock(DataSource dataSource, int robotId) {
+        this.dataSource = dataSource;
+        this.robotId = robotId;
+    }
+
+    /** @return the robot's clock, or empty when it never started a run */
+    public Optional<RobotTick> robot() throws SQLException {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(
+                "SELECT run_id, step, sim_time_ms, timing, state FROM robot_clock WHERE robot_id = ?")) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                return rs.next() ? Optional.of(new RobotTick(rs.getLong(1), rs.getLong(2), rs.getLong(3), rs.getString(4),
+                        rs.getString(5))) : Optional.empty();
+            }
+        }
+    }
+
+    /** @return what this engine last published, or empty */
+    public Optional<Served> served() throws SQLException {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(
+                "SELECT run_id, step, iteration FROM engine_clock WHERE robot_id = ?")) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                return rs.next() ? Optional.of(new Served(rs.getLong(1), rs.getLong(2), rs.getLong(3))) : Optional.empty();
+            }
+        }
+    }
+
+    /** Publishes that the engine has served this run up to this step. */
+    public void publish(long runId, long step, long iteration) throws SQLException {
+        try (Connection c = dataSource.getConnection()) {
+            try (PreparedStatement ps = c.prepareStatement("UPDATE engine_clock SET run_id = ?, step = ?, iteration = ?, "
+                    + "updated_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ?")) {
+                ps.setLong(1, runId);
+                ps.setLong(2, step);
+                ps.setLong(3, iteration);
+                ps.setInt(4, robotId);
+                if (ps.executeUpdate() > 0) {
+                    return;
+                }
+            }
+            try (PreparedStatement ps = c.prepareStatement(
+                    "INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (?, ?, ?, ?)")) {
+                ps.setInt(1, robotId);
+                ps.setLong(2, runId);
+                ps.setLong(3, step);
+                ps.setLong(4, iteration);
+                ps.executeUpdate();
+            }
+        }
+    }
+
+    /**
+     * A new robot run starts from a clean slate on the engine's side, as the one-process mission
+     * does: its commands and sensor requests go, its checkpoints are not reached any more. The
+     * mission rows and the strategy stay (a strategy set with the strategy command survives).
+     */
+    public void resetForNewRun() throws SQLException {
+        try (Connection c = dataSource.getConnection()) {
+            c.setAutoCommit(false);
+            try {
+                for (String sql : new String[] {"DELETE FROM engine_comments WHERE robot_id = ?",
+                        "DELETE FROM sensor_requests WHERE robot_id = ?",
+                        "UPDATE checkpoints SET reached = FALSE, reached_sim_time_ms = NULL WHERE robot_id = ?"}) {
+                    try (PreparedStatement ps = c.prepareStatement(sql)) {
+                        ps.setInt(1, robotId);
+                        ps.executeUpdate();
+                    }
+                }
+                c.commit();
+            } catch (SQLException | RuntimeException e) {
+                c.rollback();
+                throw e;
+            }
+        }
+    }
+}

@@ -1,0 +1,169 @@
+package org.proactiverobotics.app.deploy;
+
+import com.zaxxer.hikari.HikariDataSource;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.Outcome;
+import org.proactiverobotics.robot.LoopTimes;
+import org.proactiverobotics.robot.Lockstep;
+import org.proactiverobotics.robot.ProactiveController;
+import org.proactiverobotics.robot.RobotConfig;
+import org.proactiverobotics.robot.StepGate;
+import org.proactiverobotics.robot.link.JdbcRobotClock;
+import org.proactiverobotics.robot.link.JdbcRobotLink;
+import org.proactiverobotics.robot.link.RobotPool;
+import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.Simulation;
+import org.proactiverobotics.sim2d.WorldSpec;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The robot process: the simulated world and the {@link ProactiveController} in the
+ * Webots-style loop, in lockstep (or real time) with an engine process through the database;
+ * at the end, the report from the simulator's ground truth, as the one-process mission writes it.
+ */
+public final class RobotProcess {
+
+    /**
+     * @param world          the validated world
+     * @param db             the shared database
+     * @param robotId        the robot's id in every table
+     * @param timing         sync or realtime
+     * @param realTimeFactor real-time pacing (1 = real time); unused in sync timing
+     * @param logEvery       one INFO line every this many steps
+     * @param heartbeat      touched while the robot steps
+     */
+    public record Options(WorldSpec world, DbOptions db, int robotId, Lockstep.Timing timing, double realTimeFactor,
+                          long logEvery, Heartbeat heartbeat) {
+    }
+
+    private static final Logger LOG = LoggerFactory.getLogger(RobotProcess.class);
+
+    private final Options options;
+    private final ShutdownSignal signal;
+
+    /**
+     * @param options what to run
+     * @param signal  the stop request (SIGTERM / Ctrl-C)
+     */
+    public RobotProcess(Options options, ShutdownSignal signal) {
+        this.options = options;
+        this.signal = signal;
+    }
+
+    /**
+     * Waits for the database, starts a run, waits for the engine, runs the mission to its end.
+     *
+     * @return the report; outcome {@link Outcome#STOPPED} when a stop came first
+     * @throws DatabaseWait.Unreachable when the database is not usable in time
+     */
+    public MissionReport run() throws DatabaseWait.Unreachable {
+        WorldSpec world = options.world();
+        int robotId = options.robotId();
+        Simulation sim = new Simulation(world);
+        if (!DatabaseWait.await(options.db(), "robot_clock", signal::stopRequested)) {
+            return report(sim, Outcome.STOPPED, 0, null, Map.of(), 0);
+        }
+        boolean sync = options.timing() == Lockstep.Timing.SYNC;
+        RobotConfig config = RobotConfig.defaults(robotId).withRealTimeFactor(sync ? 0 : options.realTimeFactor());
+        Map<String, Long> wins = new TreeMap<>();
+        try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password());
+             ProactiveController robot = new ProactiveController(sim, new JdbcRobotLink(pool), config)) {
+            robot.onCommand(c -> wins.merge(c.scenario(), 1L, Long::sum));
+            signal.onStop(robot::requestStop);
+            Lockstep lockstep = new Lockstep(new JdbcRobotClock(pool), robotId, options.timing(),
+                    () -> signal.stopRequested() || robot.stopRequested());
+            if (!lockstep.begin()) {
+                return report(sim, Outcome.STOPPED, 0, robot.loopTimes(), wins, 0);
+            }
+            long start = System.nanoTime();
+            robot.run(new StatusGate(lockstep, sim, options));
+            double wallS = (System.nanoTime() - start) / 1e9;
+            Outcome outcome = outcome(sim);
+            lockstep.finish(outcome == Outcome.STOPPED ? "STOPPED" : "FINISHED");
+            long iterations = lockstep.lastTick().map(t -> t.iteration()).orElse(0L);
+            return report(sim, outcome, wallS, robot.loopTimes(), wins, iterations);
+        }
+    }
+
+    /** The same order of checks as the one-process mission. */
+    private static Outcome outcome(Simulation sim) {
+        GroundTruth truth = sim.groundTruth();
+        if (truth.checkpointsReached() == truth.checkpointsTotal()) {
+            return Outcome.MISSION_ACCOMPLISHED;
+        }
+        if (truth.batteryPct() <= 0.0) {
+            return Outcome.BATTERY_DEPLETED;
+        }
+        if (sim.timeLimitReached()) {
+            return Outcome.TIME_LIMIT;
+        }
+        return Outcome.STOPPED;
+    }
+
+    private MissionReport report(Simulation sim, Outcome outcome, double wallS, LoopTimes times, Map<String, Long> wins,
+                                 long engineIterations) {
+        GroundTruth truth = sim.groundTruth();
+        double simS = sim.simTimeMs() / 1000.0;
+        long steps = times == null ? 0 : times.steps();
+        MissionReport.Timing timing = times == null ? null
+                : new MissionReport.Timing(round(times.physicsMs(), 4), round(times.senseMs() + times.actMs(), 4),
+                round(times.waitMs(), 4));
+        // strategy: the engine's (the robot user may not read it); ruleFailures: -1, the robot cannot see them
+        return new MissionReport(options.world().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, null,
+                databaseKind(options.db().url()), truth.checkpointsReached(), truth.checkpointsTotal(), simS,
+                round(wallS, 3), round(simS / Math.max(wallS, 1e-9), 1), steps, engineIterations,
+                round(truth.distanceM(), 3), truth.collisions(), round(truth.minClearanceM(), 4),
+                round(truth.minBatteryPct(), 2), round(truth.batteryPct(), 2), truth.recharges(), Map.copyOf(wins), -1,
+                timing);
+    }
+
+    static String databaseKind(String jdbcUrl) {
+        String rest = jdbcUrl.startsWith("jdbc:") ? jdbcUrl.substring(5) : jdbcUrl;
+        int colon = rest.indexOf(':');
+        return colon < 0 ? rest : rest.substring(0, colon);
+    }
+
+    private static double round(double value, int decimals) {
+        double scale = Math.pow(10, decimals);
+        return Math.round(value * scale) / scale;
+    }
+
+    /** The lockstep gate plus one INFO line every N steps and the heartbeat. */
+    private static final class StatusGate implements StepGate {
+        private final Lockstep lockstep;
+        private final Simulation sim;
+        private final Options options;
+        private final long startNanos = System.nanoTime();
+
+        StatusGate(Lockstep lockstep, Simulation sim, Options options) {
+            this.lockstep = lockstep;
+            this.sim = sim;
+            this.options = options;
+        }
+
+        @Override
+        public boolean sensed(long step, long simTimeMs) {
+            options.heartbeat().beat();
+            return lockstep.sensed(step, simTimeMs);
+        }
+
+        @Override
+        public void stepped(long step, long simTimeMs) {
+            options.heartbeat().beat();
+            if (step % options.logEvery() == 0) {
+                GroundTruth truth = sim.groundTruth();
+                double wallS = (System.nanoTime() - startNanos) / 1e9;
+                LOG.info("robot {}: step {}, {} s simulated ({}x real time), checkpoints {}/{}, battery {} %, {} m, {} collision(s)",
+                        options.robotId(), step, String.format(Locale.ROOT, "%.1f", simTimeMs / 1000.0),
+                        String.format(Locale.ROOT, "%.1f", simTimeMs / 1000.0 / Math.max(wallS, 1e-9)),
+                        truth.checkpointsReached(), truth.checkpointsTotal(),
+                        String.format(Locale.ROOT, "%.1f", truth.batteryPct()),
+                        String.format(Locale.ROOT, "%.1f", truth.distanceM()), truth.collisions());
+            }
+        }
+    }
+}

@@ -1,0 +1,114 @@
+package org.proactiverobotics.app.deploy;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Pattern;
+
+/**
+ * The least-privilege users script, deploy/users.sql (packaged in the jar), filled in: the same
+ * template docker compose's MySQL initialisation applies through deploy/mysql-init/02-users.sh.
+ */
+public final class UsersScript {
+
+    /** The default engine user. */
+    public static final String ENGINE_USER = "proactive_engine";
+    /** The default robot user. */
+    public static final String ROBOT_USER = "proactive_robot";
+
+    private static final String RESOURCE = "users.sql";
+    private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_]{1,32}");
+    private static final Pattern HOST = Pattern.compile("[A-Za-z0-9_.%-]{1,255}");
+
+    /**
+     * The values of the template's placeholders.
+     *
+     * @param database       the database (schema) the users may use
+     * @param host           the host pattern of both users ('%' = anywhere)
+     * @param engineUser     the engine's user name
+     * @param enginePassword its password
+     * @param robotUser      the robot's user name
+     * @param robotPassword  its password
+     */
+    public record Values(String database, String host, String engineUser, String enginePassword, String robotUser,
+                         String robotPassword) {
+
+        /** @return why these values cannot go into the script, or null when they can */
+        public String problem() {
+            for (String name : new String[] {database, engineUser, robotUser}) {
+                if (name == null || !NAME.matcher(name).matches()) {
+                    return "database and user names are 1 to 32 letters, digits or '_': " + name;
+                }
+            }
+            if (engineUser.equals(robotUser)) {
+                return "the engine and the robot need two different users: " + engineUser;
+            }
+            if (host == null || !HOST.matcher(host).matches()) {
+                return "the host pattern is letters, digits, '.', '-', '_' or '%': " + host;
+            }
+            for (String password : new String[] {enginePassword, robotPassword}) {
+                if (password == null || password.isEmpty()) {
+                    return "both passwords are needed (--engine-password / ENGINE_DB_PASSWORD, --robot-password / ROBOT_DB_PASSWORD)";
+                }
+                if (password.indexOf('\'') >= 0 || password.indexOf('\\') >= 0 || password.chars().anyMatch(ch -> ch < 0x20)) {
+                    return "a password must not contain ', \\ or control characters";
+                }
+            }
+            return null;
+        }
+    }
+
+    private UsersScript() {
+    }
+
+    /** @return the template as packaged */
+    public static String template() {
+        try (InputStream in = UsersScript.class.getResourceAsStream(RESOURCE)) {
+            if (in == null) {
+                throw new IllegalStateException("users.sql is missing from the app jar");
+            }
+            return new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * @param values the placeholders' values (checked: see {@link Values#problem()})
+     * @return the script, filled in
+     */
+    public static String filled(Values values) {
+        String problem = values.problem();
+        if (problem != null) {
+            throw new IllegalArgumentException(problem);
+        }
+        return template().replace("@DATABASE@", values.database()).replace("@HOST@", values.host())
+                .replace("@ENGINE_USER@", values.engineUser()).replace("@ENGINE_PASSWORD@", values.enginePassword())
+                .replace("@ROBOT_USER@", values.robotUser()).replace("@ROBOT_PASSWORD@", values.robotPassword());
+    }
+
+    /**
+     * @param script a filled script
+     * @return its statements, "--" comment lines dropped (a statement ends with ';' at a line end)
+     */
+    public static List<String> statements(String script) {
+        List<String> out = new ArrayList<>();
+        StringBuilder current = new StringBuilder();
+        for (String line : script.split("\n")) {
+            String trimmed = line.strip();
+            if (trimmed.isEmpty() || trimmed.startsWith("--")) {
+                continue;
+            }
+            current.append(line).append('\n');
+            if (trimmed.endsWith(";")) {
+                String sql = current.toString().strip();
+                out.add(sql.substring(0, sql.length() - 1));
+                current.setLength(0);
+            }
+        }
+        return out;
+    }
+}
