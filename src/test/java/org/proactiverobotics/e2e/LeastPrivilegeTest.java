@@ -1,0 +1,137 @@
+package org.proactiverobotics.e2e;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.proactiverobotics.app.Main;
+import picocli.CommandLine;
+
+/**
+ * The two database users the compose init creates (deploy/mysql-init/02-users.sh filling
+ * deploy/users.sql), on MariaDB: each writes only its own tables, neither may drop, alter,
+ * create or grant; {@code db users} creates the very same grants.
+ */
+class LeastPrivilegeTest {
+
+    private static Deployment deployment;
+
+    @BeforeAll
+    static void deploy() throws Exception {
+        deployment = Deployment.create();
+    }
+
+    @AfterAll
+    static void tearDown() throws Exception {
+        if (deployment != null) {
+            deployment.close();
+        }
+    }
+
+    private void asRobot(String sql) throws SQLException {
+        deployment.executeAs(deployment.robotUser, Deployment.ROBOT_PASSWORD, sql);
+    }
+
+    private void asEngine(String sql) throws SQLException {
+        deployment.executeAs(deployment.engineUser, Deployment.ENGINE_PASSWORD, sql);
+    }
+
+    @Test
+    void theRobotMayNotWriteCommands() {
+        assertThatThrownBy(() -> asRobot("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) "
+                + "VALUES (1, 1, 0, 'Forged', 'FORWARD 0.5')"))
+                .isInstanceOf(SQLException.class).hasMessageContaining("denied");
+    }
+
+    @Test
+    void theEngineMayNotWriteReadings() {
+        assertThatThrownBy(() -> asEngine("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 0, 0, 0)"))
+                .isInstanceOf(SQLException.class).hasMessageContaining("denied");
+    }
+
+    @Test
+    void eachWritesItsOwnTablesAndReadsTheOthers() throws Exception {
+        asRobot("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (99, 0, 1, 2)");
+        asRobot("SELECT * FROM engine_comments WHERE robot_id = 99");
+        asEngine("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (99, 1, 0, 'Test', 'STOP')");
+        asEngine("SELECT * FROM gps_stored_values WHERE robot_id = 99");
+        asEngine("UPDATE checkpoints SET reached = TRUE WHERE robot_id = 99");
+        assertThatThrownBy(() -> asRobot("UPDATE checkpoints SET reached = TRUE WHERE robot_id = 99"))
+                .hasMessageContaining("denied");
+        assertThatThrownBy(() -> asRobot("INSERT INTO strategy (robot_id, slot, scenario, priority, strategy_name) "
+                + "VALUES (99, 0, 'X', 1, 'x')")).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asEngine("INSERT INTO robot_clock (robot_id, run_id, step, sim_time_ms, timing, state) "
+                + "VALUES (99, 1, 0, 0, 'sync', 'RUNNING')")).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asRobot("INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (99, 1, 0, 0)"))
+                .hasMessageContaining("denied");
+    }
+
+    @Test
+    void neitherMayDropAlterCreateOrGrant() {
+        for (String user : List.of("engine", "robot")) {
+            for (String sql : List.of("DROP TABLE engine_comments", "ALTER TABLE gps_stored_values ADD COLUMN x INT",
+                    "CREATE TABLE intruder (id INT)", "GRANT SELECT ON engine_state TO '" + deployment.robotUser + "'@'%'",
+                    "DELETE FROM mysql.user")) {
+                assertThatThrownBy(() -> {
+                    if (user.equals("engine")) {
+                        asEngine(sql);
+                    } else {
+                        asRobot(sql);
+                    }
+                }).as(user + ": " + sql).isInstanceOf(SQLException.class);
+            }
+        }
+    }
+
+    @Test
+    void theDbUsersCommandGrantsExactlyWhatTheComposeInitGrants() throws Exception {
+        List<String> engineGrants = grants(deployment.engineUser);
+        List<String> robotGrants = grants(deployment.robotUser);
+        assertThat(engineGrants).hasSizeGreaterThan(10);
+        StringWriter err = new StringWriter();
+        CommandLine cl = Main.commandLine();
+        cl.setOut(new PrintWriter(new StringWriter(), true));
+        cl.setErr(new PrintWriter(err, true));
+        for (int i = 0; i < 2; i++) { // idempotent
+            int code = cl.execute("db", "users", "--db", deployment.adminUrl(), "--engine-user", deployment.engineUser,
+                    "--robot-user", deployment.robotUser, "--engine-password", Deployment.ENGINE_PASSWORD,
+                    "--robot-password", Deployment.ROBOT_PASSWORD);
+            assertThat(code).as(err.toString()).isZero();
+        }
+        assertThat(grants(deployment.engineUser)).containsExactlyInAnyOrderElementsOf(engineGrants);
+        assertThat(grants(deployment.robotUser)).containsExactlyInAnyOrderElementsOf(robotGrants);
+        asRobot("SELECT COUNT(*) FROM engine_clock"); // the password still works
+    }
+
+    @Test
+    void dbUsersRefusesAPasswordThatWouldBreakTheScript() {
+        StringWriter err = new StringWriter();
+        CommandLine cl = Main.commandLine();
+        cl.setErr(new PrintWriter(err, true));
+        int code = cl.execute("db", "users", "--db", deployment.adminUrl(), "--engine-password", "it's", "--robot-password", "x");
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString()).contains("must not contain");
+    }
+
+    private static List<String> grants(String user) throws SQLException {
+        List<String> out = new ArrayList<>();
+        try (Connection c = DriverManager.getConnection(deployment.adminUrl()); Statement s = c.createStatement();
+             ResultSet rs = s.executeQuery("SHOW GRANTS FOR '" + user + "'@'%'")) {
+            while (rs.next()) {
+                out.add(rs.getString(1).replaceAll("IDENTIFIED BY PASSWORD '[^']*'", ""));
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,179 @@
+package org.proactiverobotics.e2e;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.proactiverobotics.app.Main;
+import org.proactiverobotics.app.mission.Mission;
+import org.proactiverobotics.app.mission.MissionOptions;
+import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.db.Databases;
+import org.proactiverobotics.sim2d.WorldFiles;
+import picocli.CommandLine;
+
+/**
+ * The paper's deployment without Docker: the compose services' engine and robot commands as two
+ * OS processes, as the least-privilege users the compose init scripts create, on MariaDB
+ * through the MySQL driver compose uses. In sync timing the robot process's ground truth equals
+ * the one-process {@code run}'s, whichever process starts first.
+ */
+class TwoProcessMissionTest {
+
+    /** A short hop: one checkpoint 1.5 m ahead, for the cases where the mission itself does not matter. */
+    static final String SHORT_HOP = """
+            {"name": "short-hop", "arena": {"radiusM": 3.0}, "robot": {"x": 0.0, "y": -1.0, "headingDeg": 90.0},
+             "checkpoints": [{"x": 0.0, "y": 0.5}], "rechargeStation": {"x": -2.0, "y": 0.0, "radiusM": 0.35}}
+            """;
+
+    private static Deployment deployment;
+
+    @TempDir
+    Path tmp;
+
+    @BeforeAll
+    static void deploy() throws Exception {
+        deployment = Deployment.create();
+    }
+
+    @AfterAll
+    static void tearDown() throws Exception {
+        if (deployment != null) {
+            deployment.close();
+        }
+    }
+
+    @Test
+    void engineFirstThenRobotGiveRunsGroundTruthThenSigtermSavesAndExitsZero() throws Exception {
+        Path engineLog = tmp.resolve("engine.log");
+        Path robotLog = tmp.resolve("robot.log");
+        Process engine = deployment.start("engine", Map.of("--heartbeat", tmp.resolve("engine.beat").toString()), engineLog);
+        Deployment.awaitLog(engineLog, "waiting for the robot", 30);
+
+        long start = System.nanoTime();
+        Process robot = deployment.start("robot", Map.of("--out", tmp.resolve("out").toString(),
+                "--heartbeat", tmp.resolve("robot.beat").toString()), robotLog);
+        assertThat(robot.waitFor(150, TimeUnit.SECONDS)).as("robot finished").isTrue();
+        double wallS = (System.nanoTime() - start) / 1e9;
+        assertThat(robot.exitValue()).as(Files.readString(robotLog)).isZero();
+        JsonObject report = JsonParser.parseString(Files.readString(tmp.resolve("out/report.json"))).getAsJsonObject();
+        assertSameGroundTruth(report, Missions.onH2("reference-arena").report());
+        assertThat(report.get("database").getAsString()).isEqualTo("mysql");
+        assertThat(Files.readString(robotLog)).contains("the engine acknowledged run").contains("robot 1: step 500,")
+                .doesNotContain("Exception");
+        assertThat(tmp.resolve("robot.beat")).exists();
+        System.out.printf("two-process reference mission (MariaDB, sync): %.1f s wall, robot loop %.1f s%n", wallS,
+                report.get("wallTimeS").getAsDouble());
+
+        // the strategy of the mission, from a third process's point of view, as the engine's user
+        String shown = strategy(0);
+        assertThat(shown).contains("strategy safety-first").contains("ObstacleAvoidance");
+        assertThat(strategy(0, "--set", "destination-first")).contains("safety-first -> destination-first")
+                .contains("strategy destination-first");
+        assertThat(strategy(2, "--set", "reckless")).contains("unknown strategy 'reckless'").contains("safety-first, destination-first");
+
+        engine.destroy(); // SIGTERM
+        assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        assertThat(engine.exitValue()).as(Files.readString(engineLog)).isZero();
+        assertThat(Files.readString(engineLog)).contains("stopped after iteration " + report.get("controlSteps").getAsLong())
+                .contains("engine 1: iteration 500 for robot step 500").doesNotContain("Exception");
+        assertThat(deployment.queryLong("SELECT iteration FROM engine_state WHERE robot_id = 1"))
+                .isEqualTo(report.get("controlSteps").getAsLong());
+    }
+
+    @Test
+    void robotFirstThenEngineGiveRunsGroundTruth() throws Exception {
+        Path world = tmp.resolve("short-hop.json");
+        Files.writeString(world, SHORT_HOP);
+        Path engineLog = tmp.resolve("engine.log");
+        Path robotLog = tmp.resolve("robot.log");
+        Process robot = deployment.start("robot", robotOptions(world, "2"), robotLog);
+        Deployment.awaitLog(robotLog, "waiting for the engine to acknowledge run", 30);
+        Process engine = deployment.start("engine", Map.of("--robot-id", "2", "--log-every", "50"), engineLog);
+        assertThat(robot.waitFor(90, TimeUnit.SECONDS)).isTrue();
+        assertThat(robot.exitValue()).as(Files.readString(robotLog)).isZero();
+        engine.destroy();
+        assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        assertThat(engine.exitValue()).as(Files.readString(engineLog)).isZero();
+
+        JsonObject report = JsonParser.parseString(Files.readString(tmp.resolve("out/report.json"))).getAsJsonObject();
+        Path runOut = Files.createDirectories(tmp.resolve("run"));
+        MissionReport oneProcess = new Mission(new MissionOptions(WorldFiles.load(world),
+                Databases.embeddedH2Url("short_hop_" + System.nanoTime()), "sa", "", "safety-first", 1)).run(runOut);
+        assertSameGroundTruth(report, oneProcess);
+    }
+
+    @Test
+    void realTimeTimingAccomplishesAShortHop() throws Exception {
+        Path world = tmp.resolve("short-hop.json");
+        Files.writeString(world, SHORT_HOP);
+        Path engineLog = tmp.resolve("engine.log");
+        Path robotLog = tmp.resolve("robot.log");
+        Process engine = deployment.start("engine", Map.of("--robot-id", "3", "--period-ms", "16"), engineLog);
+        Map<String, String> options = robotOptions(world, "3");
+        options.put("--timing", "realtime");
+        options.put("--real-time-factor", "2");
+        Process robot = deployment.start("robot", options, robotLog);
+        assertThat(robot.waitFor(90, TimeUnit.SECONDS)).isTrue();
+        assertThat(robot.exitValue()).as(Files.readString(robotLog)).isZero();
+        JsonObject report = JsonParser.parseString(Files.readString(tmp.resolve("out/report.json"))).getAsJsonObject();
+        assertThat(report.get("outcome").getAsString()).isEqualTo("MISSION_ACCOMPLISHED");
+        assertThat(report.get("engineIterations").getAsLong()).isPositive();
+        engine.destroy();
+        assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        assertThat(engine.exitValue()).isZero();
+        assertThat(Files.readString(engineLog)).contains("realtime timing");
+    }
+
+    private Map<String, String> robotOptions(Path world, String robotId) {
+        Map<String, String> options = new LinkedHashMap<>();
+        options.put("--world", world.toString());
+        options.put("--robot-id", robotId);
+        options.put("--out", tmp.resolve("out").toString());
+        options.put("--heartbeat", tmp.resolve("robot.beat").toString());
+        return options;
+    }
+
+    /** The simulator's ground truth (DESIGN section 8) and the step counts match, field by field. */
+    static void assertSameGroundTruth(JsonObject twoProcesses, MissionReport oneProcess) {
+        assertThat(twoProcesses.get("outcome").getAsString()).isEqualTo(oneProcess.outcome().name());
+        assertThat(twoProcesses.get("checkpointsReached").getAsInt()).isEqualTo(oneProcess.checkpointsReached());
+        assertThat(twoProcesses.get("collisions").getAsInt()).isEqualTo(oneProcess.collisions());
+        assertThat(twoProcesses.get("distanceM").getAsDouble()).isEqualTo(oneProcess.distanceM());
+        assertThat(twoProcesses.get("controlSteps").getAsLong()).isEqualTo(oneProcess.controlSteps());
+        assertThat(twoProcesses.get("engineIterations").getAsLong()).isEqualTo(oneProcess.engineIterations());
+        assertThat(twoProcesses.get("minBattery").getAsDouble()).isEqualTo(oneProcess.minBattery());
+        assertThat(twoProcesses.get("finalBattery").getAsDouble()).isEqualTo(oneProcess.finalBattery());
+        assertThat(twoProcesses.get("minClearanceM").getAsDouble()).isEqualTo(oneProcess.minClearanceM());
+        assertThat(twoProcesses.get("simTimeS").getAsDouble()).isEqualTo(oneProcess.simTimeS());
+        assertThat(twoProcesses.get("recharges").getAsInt()).isEqualTo(oneProcess.recharges());
+    }
+
+    private static String strategy(int expectedCode, String... more) {
+        StringWriter out = new StringWriter();
+        CommandLine cl = Main.commandLine();
+        cl.setOut(new PrintWriter(out, true));
+        cl.setErr(new PrintWriter(out, true));
+        String[] args = new String[6 + more.length];
+        args[0] = "strategy";
+        args[1] = "--db";
+        args[2] = deployment.url();
+        args[3] = "--db-user";
+        args[4] = deployment.engineUser;
+        args[5] = "--db-password=" + Deployment.ENGINE_PASSWORD;
+        System.arraycopy(more, 0, args, 6, more.length);
+        assertThat(cl.execute(args)).as(out.toString()).isEqualTo(expectedCode);
+        return out.toString();
+    }
+}
