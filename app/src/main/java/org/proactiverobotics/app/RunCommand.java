@@ -68,6 +68,11 @@ public final class RunCommand implements Callable<Integer> {
             completionCandidates = StrategyNames.class)
     private String strategy;
 
+    @Option(names = "--link", paramLabel = "LAYER", defaultValue = "jdbc",
+            description = "How the engine and the robot talk: jdbc (the shared database) or direct (in-process memory, "
+                    + "no database: what the middleware costs is the difference). Default: ${DEFAULT-VALUE}.")
+    private String link;
+
     @Option(names = "--quiet", description = "No live progress line.")
     private boolean quiet;
 
@@ -97,11 +102,22 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
+        MissionOptions.Link layer = switch (link) {
+            case "jdbc" -> MissionOptions.Link.JDBC;
+            case "direct" -> MissionOptions.Link.DIRECT;
+            default -> null;
+        };
+        if (layer == null || (layer == MissionOptions.Link.DIRECT && db != null)) {
+            err.println(layer == null ? "--link must be jdbc or direct: " + link
+                    : "--link direct uses no database: drop --db");
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
         Path outDir = out != null ? out : Path.of("runs", spec.name() + "-"
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         String url = db != null ? db : Databases.embeddedH2Url("proactive_run_" + System.nanoTime());
         MissionOptions options = new MissionOptions(spec, url, db != null ? dbUser : "sa", db != null ? dbPassword : "",
-                strategy, 1);
+                strategy, 1).withLink(layer);
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {
@@ -111,7 +127,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         boolean live = !quiet && System.console() != null;
         stdout.printf(Locale.ROOT, "Mission %s on %s, strategy %s%n", spec.name(),
-                db != null ? db : "embedded H2", strategy);
+                layer == MissionOptions.Link.DIRECT ? "the direct in-process link" : db != null ? db : "embedded H2", strategy);
         stdout.flush();
         MissionReport report;
         try {
