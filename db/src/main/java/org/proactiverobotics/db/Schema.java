@@ -5,6 +5,7 @@ import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.sql.Connection;
+import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
 import java.util.ArrayList;
@@ -31,13 +32,39 @@ public final class Schema {
     public static void apply(DataSource dataSource) throws SQLException {
         try (Connection connection = dataSource.getConnection(); Statement statement = connection.createStatement()) {
             for (String sql : statements()) {
-                try {
-                    statement.execute(sql);
-                } catch (SQLException e) {
-                    throw new SQLException("schema.sql: statement failed: " + firstLine(sql) + ": " + e.getMessage(),
-                            e.getSQLState(), e.getErrorCode(), e);
+                execute(statement, sql);
+            }
+            for (String[] added : ADDED_COLUMNS) {
+                if (!hasColumn(statement, added[0], added[1])) {
+                    execute(statement, "ALTER TABLE " + added[0] + " ADD COLUMN " + added[1] + " " + added[2]);
                 }
             }
+        }
+    }
+
+    /**
+     * Columns added to a table after it first shipped: {table, column, definition}, each also in
+     * the table's CREATE TABLE. A database made before gets them from {@link #apply}: MySQL 8 has
+     * no {@code ADD COLUMN IF NOT EXISTS}, so the check is done here, the same on every database.
+     */
+    private static final String[][] ADDED_COLUMNS = {
+        {"strategy", "timeout_ms", "BIGINT NOT NULL DEFAULT 0"},
+    };
+
+    private static boolean hasColumn(Statement statement, String table, String column) {
+        try (ResultSet rs = statement.executeQuery("SELECT " + column + " FROM " + table + " WHERE 1 = 0")) {
+            return true;
+        } catch (SQLException e) {
+            return false;
+        }
+    }
+
+    private static void execute(Statement statement, String sql) throws SQLException {
+        try {
+            statement.execute(sql);
+        } catch (SQLException e) {
+            throw new SQLException("schema.sql: statement failed: " + firstLine(sql) + ": " + e.getMessage(),
+                    e.getSQLState(), e.getErrorCode(), e);
         }
     }
 
