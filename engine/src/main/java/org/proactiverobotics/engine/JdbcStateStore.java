@@ -7,15 +7,20 @@ import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
 
 /**
  * Saves the engine state through JDBC in the tables {@code engine_state}, {@code engine_queue}
  * and {@code rule_failures} of schema.sql; the same SQL runs on H2 (MySQL mode), MariaDB and
  * MySQL 8. Each save is one transaction: nextQueue's rows are rewritten in place, the size
- * difference inserted or deleted.
+ * difference inserted or deleted; a row whose rule type and JSON are what this store last saved
+ * there is left alone (most rules keep their state from one iteration to the next). Over an
+ * {@link IterationTransaction} the save joins the iteration's transaction, and a rollback of it
+ * makes this store forget what it believed saved.
  */
 public final class JdbcStateStore implements StateStore {
 
@@ -23,6 +28,8 @@ public final class JdbcStateStore implements StateStore {
 
     private final DataSource dataSource;
     private final StateCodec codec;
+    /** Per robot, "type NUL json" of each queue row as last committed; absent = unknown, read the table. */
+    private final Map<Integer, List<String>> savedRows = new ConcurrentHashMap<>();
 
     /** @param dataSource the database (a HikariCP pool, typically) */
     public JdbcStateStore(DataSource dataSource) {
@@ -33,6 +40,9 @@ public final class JdbcStateStore implements StateStore {
     public JdbcStateStore(DataSource dataSource, StateCodec codec) {
         this.dataSource = Objects.requireNonNull(dataSource);
         this.codec = Objects.requireNonNull(codec);
+        if (dataSource instanceof IterationTransaction transaction) {
+            transaction.onRollback(savedRows::clear);
+        }
     }
 
     @Override
@@ -136,11 +146,13 @@ public final class JdbcStateStore implements StateStore {
 
     @Override
     public void save(int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory, List<RuleFailure> failures) {
+        List<String> previous = savedRows.remove(robotId); // a failed save leaves nothing believed saved
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
             try {
-                save(c, robotId, iteration, nextQueue, memory, failures);
+                List<String> rows = save(c, robotId, iteration, nextQueue, memory, failures, previous);
                 c.commit();
+                savedRows.put(robotId, rows);
             } catch (SQLException | RuntimeException e) {
                 c.rollback();
                 throw e;
@@ -151,8 +163,8 @@ public final class JdbcStateStore implements StateStore {
         }
     }
 
-    private void save(Connection c, int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory,
-                      List<RuleFailure> failures) throws SQLException {
+    private List<String> save(Connection c, int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory,
+                              List<RuleFailure> failures, List<String> previous) throws SQLException {
         String memoryJson = codec.memoryJson(memory);
         try (PreparedStatement ps = c.prepareStatement(
                 "UPDATE engine_state SET iteration = ?, memory_json = ?, saved_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ?")) {
@@ -170,7 +182,8 @@ public final class JdbcStateStore implements StateStore {
             }
         }
         // Rows are rewritten in place (UPDATE is ~3x faster than DELETE + INSERT on H2); only the size change is inserted or deleted.
-        long saved = countQueueRows(c, robotId);
+        long saved = previous != null ? previous.size() : countQueueRows(c, robotId);
+        List<String> rows = new ArrayList<>(nextQueue.size());
         int position = 0;
         try (PreparedStatement update = c.prepareStatement(
                 "UPDATE engine_queue SET rule_type = ?, rule_json = ? WHERE robot_id = ? AND position = ?");
@@ -180,9 +193,17 @@ public final class JdbcStateStore implements StateStore {
             int inserts = 0;
             for (Rule rule : nextQueue) {
                 boolean inPlace = position < saved;
+                String type = codec.ruleType(rule);
+                String json = codec.ruleJson(rule);
+                String row = type + '\u0000' + json;
+                rows.add(row);
+                if (inPlace && previous != null && row.equals(previous.get(position))) {
+                    position++;
+                    continue; // this very row is already there
+                }
                 PreparedStatement ps = inPlace ? update : insert;
-                ps.setString(1, codec.ruleType(rule));
-                ps.setString(2, codec.ruleJson(rule));
+                ps.setString(1, type);
+                ps.setString(2, json);
                 ps.setInt(3, robotId);
                 ps.setInt(4, position++);
                 ps.addBatch();
@@ -219,6 +240,7 @@ public final class JdbcStateStore implements StateStore {
                 ps.executeBatch();
             }
         }
+        return rows;
     }
 
     private static String cut(String s, int max) {
@@ -227,6 +249,7 @@ public final class JdbcStateStore implements StateStore {
 
     @Override
     public void clear(int robotId) {
+        savedRows.remove(robotId);
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
             try {

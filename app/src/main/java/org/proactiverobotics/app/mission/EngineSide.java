@@ -1,14 +1,17 @@
 package org.proactiverobotics.app.mission;
 
+import java.sql.SQLException;
 import java.util.List;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.link.EngineTables;
 import org.proactiverobotics.engine.Algorithm;
 import org.proactiverobotics.engine.IterationSummary;
+import org.proactiverobotics.engine.IterationTransaction;
 import org.proactiverobotics.engine.JdbcStateStore;
 import org.proactiverobotics.engine.ProactiveEngine;
 import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.StateStore;
+import org.proactiverobotics.engine.StateStoreException;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
 import org.proactiverobotics.engine.tables.EngineComments;
@@ -40,11 +43,14 @@ public final class EngineSide {
     private final ProactiveEngine engine;
     private final EngineTables links;
     private final JdbcRobotTables tables;
+    private final IterationTransaction transaction;
 
-    private EngineSide(ProactiveEngine engine, EngineTables links, JdbcRobotTables tables) {
+    private EngineSide(ProactiveEngine engine, EngineTables links, JdbcRobotTables tables,
+                       IterationTransaction transaction) {
         this.engine = engine;
         this.links = links;
         this.tables = tables;
+        this.transaction = transaction;
     }
 
     /**
@@ -58,8 +64,11 @@ public final class EngineSide {
      * @return the engine side
      */
     public static EngineSide build(DataSource dataSource, int robotId, DriveProfile profile, DecisionObserver observer) {
-        JdbcRobotTables tables = new JdbcRobotTables(dataSource, robotId);
-        return build(EngineTables.of(tables), tables, new JdbcStateStore(dataSource), robotId, profile, observer);
+        // The rules' writes and the saved state of an iteration commit together, once.
+        IterationTransaction transaction = new IterationTransaction(dataSource);
+        JdbcRobotTables tables = new JdbcRobotTables(transaction, robotId);
+        return build(EngineTables.of(tables), tables, transaction, new JdbcStateStore(transaction), robotId, profile,
+                observer);
     }
 
     /**
@@ -75,11 +84,11 @@ public final class EngineSide {
      */
     public static EngineSide build(EngineTables tables, StateStore store, int robotId, DriveProfile profile,
                                    DecisionObserver observer) {
-        return build(tables, null, store, robotId, profile, observer);
+        return build(tables, null, null, store, robotId, profile, observer);
     }
 
-    private static EngineSide build(EngineTables tables, JdbcRobotTables jdbc, StateStore store, int robotId,
-                                    DriveProfile profile, DecisionObserver observer) {
+    private static EngineSide build(EngineTables tables, JdbcRobotTables jdbc, IterationTransaction transaction,
+                                    StateStore store, int robotId, DriveProfile profile, DecisionObserver observer) {
         ProactiveEngine.Builder builder = ProactiveEngine.builder()
                 .robotId(robotId)
                 .algorithm(Algorithm.LAZY)
@@ -93,7 +102,7 @@ public final class EngineSide {
         if (observer != null) {
             builder.service(DecisionObserver.class, observer);
         }
-        return new EngineSide(builder.build(), tables, jdbc);
+        return new EngineSide(builder.build(), tables, jdbc, transaction);
     }
 
     /** Starts from StartUp, discarding any saved state of this robot's engine. */
@@ -113,11 +122,33 @@ public final class EngineSide {
 
     /**
      * Runs one iteration (state saved at its end) and, every {@value #PRUNE_EVERY} iterations,
-     * prunes the engine's history.
+     * prunes the engine's history. Over the database, all of it is one transaction: the rules'
+     * writes and the saved state commit together or not at all.
      *
      * @return the iteration's summary
+     * @throws org.proactiverobotics.engine.StateStoreException when the state (or the iteration's
+     *         transaction) cannot be saved; nothing of the iteration is then in the database
      */
     public IterationSummary iterate() {
+        if (transaction == null) {
+            return iterateAndPrune();
+        }
+        transaction.begin();
+        try {
+            IterationSummary summary = iterateAndPrune();
+            transaction.commit();
+            return summary;
+        } catch (SQLException e) {
+            transaction.rollback();
+            throw new StateStoreException("committing iteration " + engine.iteration() + " of robot "
+                    + engine.robotId() + ": " + e.getMessage(), e);
+        } catch (RuntimeException e) {
+            transaction.rollback();
+            throw e;
+        }
+    }
+
+    private IterationSummary iterateAndPrune() {
         IterationSummary summary = engine.runIteration();
         if (engine.iteration() % PRUNE_EVERY == 0) {
             links.pruneHistory().applyAsInt(KEEP_ROWS);
