@@ -1,0 +1,315 @@
+package org.proactiverobotics.bench.mission;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import java.util.function.Supplier;
+import javax.sql.DataSource;
+import org.proactiverobotics.app.link.DirectEngineTables;
+import org.proactiverobotics.app.link.DirectLink;
+import org.proactiverobotics.app.link.EngineTables;
+import org.proactiverobotics.app.mission.EngineSide;
+import org.proactiverobotics.db.Schema;
+import org.proactiverobotics.engine.Algorithm;
+import org.proactiverobotics.engine.IterationSummary;
+import org.proactiverobotics.engine.IterationTransaction;
+import org.proactiverobotics.engine.JdbcStateStore;
+import org.proactiverobotics.engine.ProactiveEngine;
+import org.proactiverobotics.engine.ScenarioRegistry;
+import org.proactiverobotics.engine.StateStore;
+import org.proactiverobotics.engine.StateStoreException;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.tables.Checkpoint;
+import org.proactiverobotics.engine.tables.EngineComments;
+import org.proactiverobotics.engine.tables.JdbcRobotTables;
+import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.SensorRequests;
+import org.proactiverobotics.engine.tables.Station;
+import org.proactiverobotics.engine.tables.StrategyTable;
+import org.proactiverobotics.robot.ProactiveController;
+import org.proactiverobotics.robot.RobotConfig;
+import org.proactiverobotics.robot.link.JdbcRobotLink;
+import org.proactiverobotics.robot.link.RobotPool;
+import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.Simulation;
+import org.proactiverobotics.sim2d.WorldSpec;
+
+/**
+ * One robot, wired as {@code Mission} wires it, stepped from outside: each {@link #step()} is the
+ * robot's sense, one engine iteration, the robot's act and one physics step. Over the database
+ * the engine side is {@link EngineSide#build(DataSource, int, DriveProfile,
+ * org.proactiverobotics.engine.scenario.decision.DecisionObserver)} (the engine process's wiring:
+ * one transaction per iteration, history pruned every 100 iterations) and the robot has a pool of
+ * its own ({@link RobotPool}, as a robot process has) with the default retention policy.
+ *
+ * <p>For endless runs, {@link #rearm()} starts a new lap once the engine has marked every
+ * checkpoint reached (over the database: the {@code reached} flags are reset by SQL, outside the
+ * timed step; over the direct link: the engine's mission table is wrapped so that it forgets its
+ * marks once all are reached).
+ */
+final class Rig implements AutoCloseable {
+
+    final int robotId;
+    final WorldSpec world;
+    final Simulation sim;
+    private final ProactiveController controller;
+    private final Supplier<IterationSummary> iterate;
+    private final DataSource rearmPool;
+    private final Laps laps;
+    private final AutoCloseable owned;
+    long robotNs;
+    long engineNs;
+    long physicsNs;
+    long steps;
+    long lapsDone;
+
+    private Rig(int robotId, WorldSpec world, Simulation sim, ProactiveController controller,
+                Supplier<IterationSummary> iterate, DataSource rearmPool, Laps laps, AutoCloseable owned) {
+        this.robotId = robotId;
+        this.world = world;
+        this.sim = sim;
+        this.controller = controller;
+        this.iterate = iterate;
+        this.rearmPool = rearmPool;
+        this.laps = laps;
+        this.owned = owned;
+    }
+
+    /**
+     * A robot over a shared database, its engine built by the production {@link EngineSide}.
+     *
+     * @param enginePool the engine side's pool (schema applied); may be shared by many rigs
+     * @param jdbcUrl    the database, for the robot's own pool
+     */
+    static Rig jdbc(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user, String password)
+            throws SQLException {
+        prepare(enginePool, robotId);
+        EngineSide side = EngineSide.build(enginePool, robotId, profile(world), null);
+        side.startFresh();
+        return jdbcRobot(world, robotId, enginePool, jdbcUrl, user, password, side::iterate);
+    }
+
+    /**
+     * A robot over a shared database whose engine runs the given algorithm: EngineSide's wiring
+     * (one transaction per iteration, history pruned every {@value EngineSide#PRUNE_EVERY}
+     * iterations) rebuilt here, since EngineSide always runs the lazy algorithm.
+     */
+    static Rig jdbc(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user, String password,
+                    Algorithm algorithm) throws SQLException {
+        prepare(enginePool, robotId);
+        IterationTransaction tx = new IterationTransaction(enginePool);
+        JdbcRobotTables tables = new JdbcRobotTables(tx, robotId);
+        ProactiveEngine engine = engine(EngineTables.of(tables), new JdbcStateStore(tx), robotId, profile(world), algorithm);
+        engine.startFresh(ScenarioRegistry.load().startUp(EngineSide.SCENARIOS));
+        Supplier<IterationSummary> iterate = () -> {
+            tx.begin();
+            try {
+                IterationSummary s = engine.runIteration();
+                if (engine.iteration() % EngineSide.PRUNE_EVERY == 0) {
+                    tables.pruneHistory(EngineSide.KEEP_ROWS);
+                }
+                tx.commit();
+                return s;
+            } catch (SQLException e) {
+                tx.rollback();
+                throw new StateStoreException("commit: " + e.getMessage(), e);
+            } catch (RuntimeException e) {
+                tx.rollback();
+                throw e;
+            }
+        };
+        return jdbcRobot(world, robotId, enginePool, jdbcUrl, user, password, iterate);
+    }
+
+    private static Rig jdbcRobot(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user,
+                                 String password, Supplier<IterationSummary> iterate) {
+        Simulation sim = new Simulation(world);
+        var robotPool = RobotPool.open(jdbcUrl, user, password);
+        ProactiveController controller = new ProactiveController(sim, new JdbcRobotLink(robotPool), RobotConfig.defaults(robotId));
+        return new Rig(robotId, world, sim, controller, iterate, enginePool, null, robotPool);
+    }
+
+    /** A robot over an in-process link of its own (no database, the engine's state not saved). */
+    static Rig direct(WorldSpec world, int robotId, Algorithm algorithm) {
+        DirectLink link = new DirectLink();
+        DirectEngineTables tables = link.engine(robotId);
+        tables.write(Strategies.named(Strategies.SAFETY_FIRST));
+        Laps laps = new Laps(tables);
+        EngineTables wired = new EngineTables(tables, tables, laps, tables, tables, tables::pruneHistory);
+        ProactiveEngine engine = engine(wired, StateStore.none(), robotId, profile(world), algorithm);
+        engine.startFresh(ScenarioRegistry.load().startUp(EngineSide.SCENARIOS));
+        Supplier<IterationSummary> iterate = () -> {
+            IterationSummary s = engine.runIteration();
+            if (engine.iteration() % EngineSide.PRUNE_EVERY == 0) {
+                tables.pruneHistory(EngineSide.KEEP_ROWS);
+            }
+            return s;
+        };
+        Simulation sim = new Simulation(world);
+        ProactiveController controller = new ProactiveController(sim, link, RobotConfig.defaults(robotId));
+        return new Rig(robotId, world, sim, controller, iterate, null, laps, null);
+    }
+
+    /** The engine as EngineSide builds it, with a choice of algorithm. */
+    private static ProactiveEngine engine(EngineTables tables, StateStore store, int robotId, DriveProfile profile,
+                                          Algorithm algorithm) {
+        return ProactiveEngine.builder()
+                .robotId(robotId)
+                .algorithm(algorithm)
+                .store(store)
+                .service(SensorReadings.class, tables.readings())
+                .service(SensorRequests.class, tables.requests())
+                .service(MissionTables.class, tables.mission())
+                .service(StrategyTable.class, tables.strategy())
+                .service(EngineComments.class, tables.comments())
+                .service(DriveProfile.class, profile)
+                .build();
+    }
+
+    private static DriveProfile profile(WorldSpec world) {
+        return new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM());
+    }
+
+    /** As Mission does: the schema, a clean slate for this robot id, the default strategy. */
+    private static void prepare(DataSource pool, int robotId) throws SQLException {
+        Schema.apply(pool);
+        try (Connection c = pool.getConnection()) {
+            for (String table : Schema.tableNames()) {
+                try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ?")) {
+                    ps.setInt(1, robotId);
+                    ps.executeUpdate();
+                }
+            }
+        }
+        new JdbcRobotTables(pool, robotId).write(Strategies.named(Strategies.SAFETY_FIRST));
+    }
+
+    /** One control step, timed by part; returns its wall time, ns. */
+    long step() {
+        long t0 = System.nanoTime();
+        controller.sense();
+        long t1 = System.nanoTime();
+        iterate.get();
+        long t2 = System.nanoTime();
+        controller.act();
+        long t3 = System.nanoTime();
+        sim.step();
+        long t4 = System.nanoTime();
+        robotNs += (t1 - t0) + (t3 - t2);
+        engineNs += t2 - t1;
+        physicsNs += t4 - t3;
+        steps++;
+        return t4 - t0;
+    }
+
+    /** Zeroes the per-part times and the step count. */
+    void resetTimes() {
+        robotNs = 0;
+        engineNs = 0;
+        physicsNs = 0;
+        steps = 0;
+    }
+
+    /** Starts a new lap when the engine has marked every checkpoint reached (not part of a step). */
+    void rearm() throws SQLException {
+        if (laps != null) {
+            lapsDone = laps.laps;
+            return;
+        }
+        try (Connection c = rearmPool.getConnection()) {
+            try (PreparedStatement ps = c.prepareStatement(
+                    "SELECT COUNT(*) FROM checkpoints WHERE robot_id = ? AND reached = FALSE")) {
+                ps.setInt(1, robotId);
+                try (ResultSet rs = ps.executeQuery()) {
+                    rs.next();
+                    if (rs.getLong(1) > 0) {
+                        return;
+                    }
+                }
+            }
+            try (PreparedStatement ps = c.prepareStatement(
+                    "UPDATE checkpoints SET reached = FALSE, reached_sim_time_ms = NULL WHERE robot_id = ?")) {
+                ps.setInt(1, robotId);
+                if (ps.executeUpdate() > 0) {
+                    lapsDone++;
+                }
+            }
+        }
+    }
+
+    GroundTruth truth() {
+        return sim.groundTruth();
+    }
+
+    @Override
+    public void close() throws Exception {
+        controller.close();
+        if (owned != null) {
+            owned.close();
+        }
+    }
+
+    /** Rows per table of the whole database (all robots). */
+    static Map<String, Long> rowCounts(DataSource pool) throws SQLException {
+        Map<String, Long> counts = new LinkedHashMap<>();
+        try (Connection c = pool.getConnection(); Statement s = c.createStatement()) {
+            for (String table : Schema.tableNames()) {
+                try (ResultSet rs = s.executeQuery("SELECT COUNT(*) FROM " + table)) {
+                    rs.next();
+                    counts.put(table, rs.getLong(1));
+                }
+            }
+        }
+        return counts;
+    }
+
+    /**
+     * The direct link's mission table, looping: the engine's marks are kept here too, and
+     * forgotten (a new lap) once every checkpoint is marked.
+     */
+    static final class Laps implements MissionTables {
+        private final MissionTables target;
+        private final java.util.Set<Integer> reached = new java.util.HashSet<>();
+        long laps;
+
+        Laps(MissionTables target) {
+            this.target = target;
+        }
+
+        @Override
+        public List<Checkpoint> checkpoints() {
+            List<Checkpoint> all = target.checkpoints();
+            if (!all.isEmpty() && reached.size() >= all.size()) {
+                reached.clear();
+                laps++;
+            }
+            return all.stream().map(c -> new Checkpoint(c.seq(), c.xM(), c.yM(), c.radiusM(), reached.contains(c.seq())))
+                    .toList();
+        }
+
+        @Override
+        public void markReached(int seq, long simTimeMs) {
+            reached.add(seq);
+            target.markReached(seq, simTimeMs);
+        }
+
+        @Override
+        public Optional<Station> rechargeStation() {
+            return target.rechargeStation();
+        }
+
+        @Override
+        public OptionalDouble rechargeLevelPct() {
+            return target.rechargeLevelPct();
+        }
+    }
+}
