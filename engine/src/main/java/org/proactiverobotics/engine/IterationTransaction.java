@@ -46,22 +46,35 @@ public final class IterationTransaction implements DataSource {
     }
 
     /**
-     * Opens the iteration's transaction on the calling thread. When the database cannot be
-     * reached the iteration runs without one: each statement then fails on its own, in the rule
-     * part that made it, as it would without this class.
+     * Opens the iteration's transaction on the calling thread.
+     *
+     * @throws StateStoreException when the database cannot be reached: the iteration must not
+     *         run, since nothing of it could be saved
      */
     public void begin() {
         if (shared != null) {
             throw new IllegalStateException("an iteration transaction is already open");
         }
+        Connection c = null;
         try {
-            Connection c = pool.getConnection();
+            c = pool.getConnection();
             c.setAutoCommit(false);
-            shared = c;
-            owner = Thread.currentThread();
-            rollbackOnly = false;
         } catch (SQLException e) {
-            shared = null;
+            closeQuietly(c);
+            throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
+        }
+        shared = c;
+        owner = Thread.currentThread();
+        rollbackOnly = false;
+    }
+
+    private static void closeQuietly(Connection c) {
+        if (c != null) {
+            try {
+                c.close();
+            } catch (SQLException ignored) {
+                // already failing: the first error is the one reported
+            }
         }
     }
 

@@ -2,6 +2,7 @@ package org.proactiverobotics.app.mission;
 
 import java.sql.SQLException;
 import java.util.List;
+import java.util.function.UnaryOperator;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.link.EngineTables;
 import org.proactiverobotics.engine.Algorithm;
@@ -20,6 +21,8 @@ import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.StrategyTable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * The engine side of one robot, wired: the Proactive Engine with the robot's scenarios, its
@@ -27,6 +30,8 @@ import org.proactiverobotics.engine.tables.StrategyTable;
  * own history bounded. Used by the one-process mission and by the engine process alike.
  */
 public final class EngineSide {
+
+    private static final Logger LOG = LoggerFactory.getLogger(EngineSide.class);
 
     /**
      * The scenarios StartUp creates, in the paper's order 1 → 4 → 2 → 3 → 5, with the fail-safe
@@ -44,6 +49,8 @@ public final class EngineSide {
     private final EngineTables links;
     private final JdbcRobotTables tables;
     private final IterationTransaction transaction;
+    /** An iteration ran in memory but its transaction did not commit. */
+    private boolean aheadOfDatabase;
 
     private EngineSide(ProactiveEngine engine, EngineTables links, JdbcRobotTables tables,
                        IterationTransaction transaction) {
@@ -64,11 +71,27 @@ public final class EngineSide {
      * @return the engine side
      */
     public static EngineSide build(DataSource dataSource, int robotId, DriveProfile profile, DecisionObserver observer) {
+        return build(dataSource, robotId, profile, observer, UnaryOperator.identity());
+    }
+
+    /**
+     * As {@link #build(DataSource, int, DriveProfile, DecisionObserver)}, with the rules' view of
+     * the tables wrapped (a test injecting a fault, a counter in a benchmark).
+     *
+     * @param dataSource the shared database (schema applied)
+     * @param robotId    the robot
+     * @param profile    the robot's drive as the engine assumes it
+     * @param observer   told of every decision, or null
+     * @param decorate   wraps the tables the rules see
+     * @return the engine side
+     */
+    public static EngineSide build(DataSource dataSource, int robotId, DriveProfile profile, DecisionObserver observer,
+                                   UnaryOperator<EngineTables> decorate) {
         // The rules' writes and the saved state of an iteration commit together, once.
         IterationTransaction transaction = new IterationTransaction(dataSource);
         JdbcRobotTables tables = new JdbcRobotTables(transaction, robotId);
-        return build(EngineTables.of(tables), tables, transaction, new JdbcStateStore(transaction), robotId, profile,
-                observer);
+        return build(decorate.apply(EngineTables.of(tables)), tables, transaction, new JdbcStateStore(transaction),
+                robotId, profile, observer);
     }
 
     /**
@@ -130,30 +153,43 @@ public final class EngineSide {
      *         transaction) cannot be saved; nothing of the iteration is then in the database
      */
     public IterationSummary iterate() {
+        IterationSummary summary;
         if (transaction == null) {
-            return iterateAndPrune();
+            summary = engine.runIteration();
+        } else {
+            if (aheadOfDatabase) {
+                resume(); // the last iteration ran in memory but never committed: the database is the truth
+                aheadOfDatabase = false;
+            }
+            transaction.begin();
+            try {
+                summary = engine.runIteration();
+                transaction.commit();
+            } catch (SQLException e) {
+                transaction.rollback();
+                aheadOfDatabase = true;
+                throw new StateStoreException("committing iteration " + engine.iteration() + " of robot "
+                        + engine.robotId() + ": " + e.getMessage(), e);
+            } catch (RuntimeException e) {
+                transaction.rollback();
+                aheadOfDatabase = true;
+                throw e;
+            }
         }
-        transaction.begin();
-        try {
-            IterationSummary summary = iterateAndPrune();
-            transaction.commit();
-            return summary;
-        } catch (SQLException e) {
-            transaction.rollback();
-            throw new StateStoreException("committing iteration " + engine.iteration() + " of robot "
-                    + engine.robotId() + ": " + e.getMessage(), e);
-        } catch (RuntimeException e) {
-            transaction.rollback();
-            throw e;
-        }
-    }
-
-    private IterationSummary iterateAndPrune() {
-        IterationSummary summary = engine.runIteration();
         if (engine.iteration() % PRUNE_EVERY == 0) {
-            links.pruneHistory().applyAsInt(KEEP_ROWS);
+            prune();
         }
         return summary;
+    }
+
+    /** Housekeeping after the iteration, in its own transactions: a failure here costs the iteration nothing. */
+    private void prune() {
+        try {
+            links.pruneHistory().applyAsInt(KEEP_ROWS);
+        } catch (RuntimeException e) {
+            LOG.warn("robot {}: pruning the engine's history failed (will try again in {} iterations): {}",
+                    engine.robotId(), PRUNE_EVERY, e.getMessage());
+        }
     }
 
     /** @return the engine */

@@ -19,7 +19,6 @@ import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.CommandArray;
 import org.proactiverobotics.engine.IterationSummary;
-import org.proactiverobotics.engine.JdbcStateStore;
 import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.motion.DriveProfile;
@@ -101,12 +100,10 @@ public final class Mission {
         try (HikariDataSource enginePool = Databases.pool(options.jdbcUrl(), options.user(), options.password())) {
             Schema.apply(enginePool);
             clearRobotRows(enginePool, robotId);
-            JdbcRobotTables tables = new JdbcRobotTables(enginePool, robotId);
-            tables.write(Strategies.named(options.strategy()));
+            new JdbcRobotTables(enginePool, robotId).write(Strategies.named(options.strategy()));
 
             Simulation sim = new Simulation(world);
-            EngineSide engine = EngineSide.build(engineTables.apply(EngineTables.of(tables)), new JdbcStateStore(enginePool),
-                    robotId, profile(world), this::decided);
+            EngineSide engine = EngineSide.build(enginePool, robotId, profile(world), this::decided, engineTables);
             engine.startFresh();
 
             try (ProactiveController controller = ProactiveController.connect(sim, options.jdbcUrl(), options.user(),
