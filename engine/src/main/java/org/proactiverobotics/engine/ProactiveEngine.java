@@ -362,18 +362,17 @@ public final class ProactiveEngine {
 
     /** Engine thread only: a linear look through the queues (about ten rules), asked only after a failure. */
     boolean scheduled(String scenario) {
-        for (Rule r : currentQueue) {
-            if (scenario.equals(r.scenario())) {
-                return true;
-            }
-        }
-        for (Rule r : nextQueue) {
-            if (scenario.equals(r.scenario())) {
-                return true;
-            }
-        }
-        for (Rule r : submitted) {
-            if (scenario.equals(r.scenario())) {
+        return scheduled(scenario, null);
+    }
+
+    /** Whether a rule of this scenario (and of this name, unless null) is running or queued. */
+    boolean scheduled(String scenario, String name) {
+        return any(currentQueue, scenario, name) || any(nextQueue, scenario, name) || any(submitted, scenario, name);
+    }
+
+    private static boolean any(Iterable<Rule> rules, String scenario, String name) {
+        for (Rule r : rules) {
+            if (scenario.equals(r.scenario()) && (name == null || name.equals(r.name()))) {
                 return true;
             }
         }

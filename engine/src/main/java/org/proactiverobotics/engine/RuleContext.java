@@ -79,6 +79,17 @@ public final class RuleContext {
     }
 
     /**
+     * Whether a rule of this name and scenario runs in this iteration or is queued for the next.
+     *
+     * @param scenario the scenario's name
+     * @param rule     the rule's {@link Rule#name()}
+     * @return whether such a rule is scheduled
+     */
+    public boolean scheduled(String scenario, String rule) {
+        return engine.scheduled(Objects.requireNonNull(scenario, "scenario"), Objects.requireNonNull(rule, "rule"));
+    }
+
+    /**
      * A service given to the engine's builder (a DAO, a clock, ...).
      *
      * @param type the type it was registered under

@@ -26,6 +26,17 @@ public interface Scenario {
     }
 
     /**
+     * Whether the scenario's first rules run for the whole mission, each cloning itself (data
+     * acquisition's watches, say): then the fail-safe restores any of them that a failure took
+     * away, even while the others run on.
+     *
+     * @return true when every first rule should always be scheduled
+     */
+    default boolean keepsFirstRules() {
+        return false;
+    }
+
+    /**
      * A new meta-rule that starts the scenario. By default a {@link StartScenario}: active at
      * once, it generates {@link #firstRules()}. Override it when the scenario should wait for a
      * context (its guards and conditions decide when).

@@ -15,13 +15,15 @@ public record DistanceScan(long simTimeMs, double[] anglesRad, double[] distance
      *
      * @param fromRad sector start, radians relative to the heading (inclusive)
      * @param toRad   sector end, radians (inclusive)
-     * @return metres; the range when no sensor points there
+     * @return metres; the range when no sensor points there; a reading that is not a number or
+     *         negative counts as 0 (an obstacle), never as free space
      */
     public double min(double fromRad, double toRad) {
         double min = rangeM;
         for (int i = 0; i < anglesRad.length; i++) {
-            if (anglesRad[i] >= fromRad && anglesRad[i] <= toRad && distancesM[i] < min) {
-                min = distancesM[i];
+            if (anglesRad[i] >= fromRad && anglesRad[i] <= toRad) {
+                double d = distancesM[i];
+                min = Math.min(min, d >= 0 ? d : 0.0); // NaN fails d >= 0
             }
         }
         return min;
@@ -37,8 +39,8 @@ public record DistanceScan(long simTimeMs, double[] anglesRad, double[] distance
     public double sum(double fromRad, double toRad) {
         double sum = 0;
         for (int i = 0; i < anglesRad.length; i++) {
-            if (anglesRad[i] >= fromRad && anglesRad[i] <= toRad) {
-                sum += distancesM[i];
+            if (anglesRad[i] >= fromRad && anglesRad[i] <= toRad && distancesM[i] > 0) {
+                sum += distancesM[i]; // NaN and negatives add no free space
             }
         }
         return sum;

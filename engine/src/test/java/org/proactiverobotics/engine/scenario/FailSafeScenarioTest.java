@@ -135,6 +135,25 @@ class FailSafeScenarioTest {
     }
 
     @Test
+    void aDataAcquisitionRuleLostToOneFaultIsRestoredSoItsSensorKeepsBeingRead() throws Exception {
+        try (RobotTablesFixture f = mission()) {
+            for (int i = 0; i < 4; i++) {
+                step(f);
+            }
+            f.faulty.failOnce(org.proactiverobotics.engine.tables.Sensor.DS);
+            List<RuleFailure> failures = step(f);
+            assertThat(failures).singleElement().satisfies(x -> assertThat(x.rule()).isEqualTo("GetDS"));
+            step(f);
+            assertThat(f.engine.nextQueue()).extracting(Rule::name).contains("GetDS");
+            f.answerAll(t); // nothing pending is left unanswered ...
+            step(f);
+            assertThat(f.pendingSensors()).as("... and the scan is asked for again").contains("DS");
+            assertThat(f.engine.memory().values().get(WatchFailures.RECORD_PREFIX + "DataAcquisition"))
+                    .startsWith("running again with 1 lost rule(s) restored");
+        }
+    }
+
+    @Test
     void deadObstacleAvoidanceUnderSafetyFirstStopsTheRobotUntilItIsBack() throws Exception {
         try (RobotTablesFixture f = mission()) {
             for (int i = 0; i < 6; i++) {

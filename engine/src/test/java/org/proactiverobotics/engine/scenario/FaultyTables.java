@@ -43,6 +43,13 @@ final class FaultyTables implements SensorReadings, SensorRequests, MissionTable
         failingPackage = null;
     }
 
+    private volatile Sensor failOnceOn;
+
+    /** The next pending() for this sensor throws, once (a brief fault in one data-acquisition rule). */
+    void failOnce(Sensor sensor) {
+        failOnceOn = sensor;
+    }
+
     private void check() {
         String p = failingPackage;
         if (p != null && STACK.walk(frames -> frames.anyMatch(f -> f.getDeclaringClass().getPackageName().equals(p)))) {
@@ -83,6 +90,10 @@ final class FaultyTables implements SensorReadings, SensorRequests, MissionTable
     @Override
     public boolean pending(Sensor sensor) {
         check();
+        if (sensor == failOnceOn) {
+            failOnceOn = null;
+            throw new IllegalStateException("injected fault: one read of " + sensor + " requests refused");
+        }
         return tables.pending(sensor);
     }
 

@@ -32,6 +32,26 @@ class ObstacleAvoidanceScenarioTest {
     }
 
     @Test
+    void aStaleScanStopsTheRobotRatherThanDriveBlind() throws Exception {
+        try (RobotTablesFixture f = new RobotTablesFixture("ObstacleAvoidance")) {
+            f.scan(0, FREE, FREE, FREE, FREE, FREE, FREE, FREE, FREE);
+            f.heading(1000, 0); // the distance sensors have not been read for a second
+            f.iterate(3);
+            assertThat(suggestion(f).command()).isEqualTo("STOP");
+        }
+    }
+
+    @Test
+    void aReadingThatIsNotANumberCountsAsAnObstacleNotAsFreeSpace() throws Exception {
+        try (RobotTablesFixture f = new RobotTablesFixture("ObstacleAvoidance")) {
+            f.heading(0, 0);
+            f.scan(0, FREE, FREE, FREE, Double.NaN, FREE, FREE, FREE, FREE);
+            f.iterate(3);
+            assertThat(suggestion(f)).as("a NaN straight ahead engages avoidance").isNotNull();
+        }
+    }
+
+    @Test
     void anImminentObstacleAheadStopsAndTurnsTowardTheFreerSide() throws Exception {
         try (RobotTablesFixture f = new RobotTablesFixture("ObstacleAvoidance")) {
             f.heading(0, 0);

@@ -36,6 +36,8 @@ public final class AvoidObstacles extends Rule {
     static final double RELEASE_SIDE_M = 0.25;
     /** ... for this many iterations in a row. */
     static final int RELEASE_ITERATIONS = 4;
+    /** A scan this far behind the heading is stale (its sensor is not being read): driving blind. */
+    static final long STALE_SCAN_MS = 500;
     private static final double RELEASE_TURN_RAD = Math.toRadians(20);
     private static final double DEG = Math.PI / 180;
 
@@ -75,9 +77,16 @@ public final class AvoidObstacles extends Rule {
         return scan != null && heading != null;
     }
 
-    /** Condition: an obstacle needs avoiding (updates the boundary-following state). */
+    /**
+     * Condition: an obstacle needs avoiding (updates the boundary-following state), or the
+     * distance readings have gone stale and the robot must not drive blind (STOP).
+     */
     @Override
     protected boolean conditions(RuleContext ctx) {
+        if (Math.abs(heading.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
+            suggestion = Steering.STOP;
+            return true;
+        }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         suggestion = decide(scan, heading.yawRad(), profile);
         return suggestion != null;

@@ -15,6 +15,12 @@ public final class DataAcquisitionScenario implements Scenario {
         return NAME;
     }
 
+    /** Every watch runs for the whole mission: a lost one is restored by the fail-safe. */
+    @Override
+    public boolean keepsFirstRules() {
+        return true;
+    }
+
     /** Active from the start: the meta-rule generates these at once. */
     @Override
     public List<Rule> firstRules() {

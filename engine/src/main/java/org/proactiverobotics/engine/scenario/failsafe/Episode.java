@@ -22,6 +22,8 @@ final class Episode {
     long restartedAt;
     /** How many times it was restarted in this episode. */
     int restarts;
+    /** How many lost rules were restored in this episode. */
+    int restoredRules;
 
     private Episode() {
     }

@@ -11,6 +11,7 @@ import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.RuleFailure;
+import org.proactiverobotics.engine.Scenario;
 import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.StartUp;
 import org.proactiverobotics.engine.Suggestion;
@@ -74,6 +75,7 @@ public final class WatchFailures extends Rule {
     private transient List<RuleFailure> failures = List.of();
     private transient List<MetaRule> restartBefore = new ArrayList<>();
     private transient List<MetaRule> restartAfter = new ArrayList<>();
+    private transient List<Rule> restored = new ArrayList<>();
 
     /** A watch with nothing seen yet. */
     public WatchFailures() {
@@ -89,6 +91,7 @@ public final class WatchFailures extends Rule {
         failures = ctx.failures();
         restartBefore.clear();
         restartAfter.clear();
+        restored.clear();
     }
 
     /** Guard: something failed lately, or a scenario is still in trouble (the quiet path does nothing). */
@@ -129,6 +132,7 @@ public final class WatchFailures extends Rule {
 
     @Override
     protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
+        restored.forEach(ctx::generate);
         restartBefore.forEach(ctx::generate);
         ctx.generate(this);
         restartAfter.forEach(ctx::generate);
@@ -161,6 +165,9 @@ public final class WatchFailures extends Rule {
     /** One iteration of an episode; true when it is over. */
     private boolean follow(RuleContext ctx, String scenario, Episode e, long iteration) {
         boolean queued = ctx.scheduled(scenario);
+        if (queued && e.goneSince == 0 && e.restartedAt == 0) {
+            restoreLostRules(ctx, scenario, e); // still running, but maybe without one of its rules
+        }
         if (!queued) {
             if (e.goneSince == 0) {
                 e.goneSince = iteration;
@@ -188,13 +195,36 @@ public final class WatchFailures extends Rule {
             ctx.memory().commandArray().enter(slotOf(ctx, scenario), STOP, FailSafeScenario.NAME, iteration);
         }
         if (queued && !e.standIn() && iteration - e.lastFailure >= 2) {
-            String back = e.restarts == 0 ? "still running" : "back after " + e.restarts + " restart(s)";
+            String back = e.restarts > 0 ? "back after " + e.restarts + " restart(s)"
+                    : e.restoredRules > 0 ? "running again with " + e.restoredRules + " lost rule(s) restored" : "still running";
             LOG.info("fail-safe: scenario {} {}, no failure since iteration {}", scenario, back, e.lastFailure);
             record(ctx, scenario, back + " at iteration " + iteration + "; failed from iteration " + e.since + " to "
                     + e.lastFailure + " (last: " + e.failure + ")");
             return true;
         }
         return false;
+    }
+
+    /** A scenario that keeps its first rules gets back any a failure took away (a lost GetDS would freeze the scan). */
+    private void restoreLostRules(RuleContext ctx, String scenario, Episode e) {
+        Scenario definition;
+        try {
+            definition = ctx.findService(ScenarioRegistry.class).orElseGet(ScenarioRegistry::load).get(scenario);
+        } catch (RuntimeException ex) {
+            return; // not a registered scenario: nothing to restore from
+        }
+        if (!definition.keepsFirstRules()) {
+            return;
+        }
+        for (Rule rule : definition.firstRules()) {
+            if (!ctx.scheduled(scenario, rule.name())) {
+                restored.add(rule);
+                if (e.restoredRules++ == 0) {
+                    LOG.warn("fail-safe: {} of scenario {} was lost ({}); restored", rule.name(), scenario, e.failure);
+                }
+                record(ctx, scenario, rule.name() + " restored at iteration " + ctx.iteration() + " (" + e.failure + ")");
+            }
+        }
     }
 
     private void restart(RuleContext ctx, String scenario, Episode e, long iteration) {
