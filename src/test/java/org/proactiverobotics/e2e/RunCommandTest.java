@@ -74,6 +74,14 @@ class RunCommandTest {
     }
 
     @Test
+    void aJdbcUrlNoDriverAcceptsIsBadInputAndWritesNothing() {
+        Path outDir = tmp.resolve("never");
+        assertThat(run("run", "--db", "jdbc:nosuchdb://somewhere/x", "--out", outDir.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("jdbc:nosuchdb://somewhere/x").doesNotContain("Exception");
+        assertThat(outDir).doesNotExist();
+    }
+
+    @Test
     void anUnreachableDatabaseIsAnInfrastructureFailureWithExitThree() {
         Path outDir = tmp.resolve("out");
         int code = run("run", "--db", "jdbc:mariadb://127.0.0.1:1/nowhere?connectTimeout=500", "--out", outDir.toString(), "--quiet");

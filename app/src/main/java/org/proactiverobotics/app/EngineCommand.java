@@ -85,8 +85,12 @@ public final class EngineCommand implements Callable<Integer> {
         }
         ServiceLogging.statusLines();
         ShutdownSignal signal = ShutdownSignal.install();
-        int code = serve(signal, err);
-        signal.finished(code);
+        int code = Main.EXIT_INFRASTRUCTURE; // what an unexpected exception ends with
+        try {
+            code = serve(signal, err);
+        } finally {
+            signal.finished(code);
+        }
         return code;
     }
 

@@ -102,8 +102,12 @@ public final class RobotCommand implements Callable<Integer> {
         }
         ServiceLogging.statusLines();
         ShutdownSignal signal = ShutdownSignal.install();
-        int code = runMission(worldSpec, outDir, signal, stdout, err);
-        signal.finished(code);
+        int code = Main.EXIT_INFRASTRUCTURE; // what an unexpected exception ends with
+        try {
+            code = runMission(worldSpec, outDir, signal, stdout, err);
+        } finally {
+            signal.finished(code);
+        }
         return code;
     }
 

@@ -8,6 +8,7 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.sql.DriverManager;
 import java.sql.SQLException;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
@@ -97,8 +98,9 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
-        if (db != null && !db.startsWith("jdbc:")) {
-            err.println("--db must be a JDBC URL (jdbc:h2:..., jdbc:mariadb://..., jdbc:mysql://...): " + db);
+        if (db != null && !supportedJdbcUrl(db)) {
+            err.println("--db must be a JDBC URL this program has a driver for (jdbc:h2:..., jdbc:mariadb://...,"
+                    + " jdbc:mysql://...): " + db);
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
@@ -149,6 +151,10 @@ public final class RunCommand implements Callable<Integer> {
             err.println("cannot write the output in " + outDir + ": " + e.getMessage());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
+        } catch (RuntimeException e) { // the database failing mid-mission (engine state, tables)
+            err.println("mission aborted (" + url + "): " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
         }
         stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.0fx real time)%n"
                         + "  %.1f m travelled, %d collisions, battery min %.1f %%, %d recharges%n",
@@ -158,6 +164,15 @@ public final class RunCommand implements Callable<Integer> {
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;
+    }
+
+    /** Whether a JDBC driver on the class path accepts the URL (checked before anything is written). */
+    static boolean supportedJdbcUrl(String url) {
+        try {
+            return url.startsWith("jdbc:") && DriverManager.getDriver(url) != null;
+        } catch (SQLException e) {
+            return false;
+        }
     }
 
     static void writeReport(MissionReport report, Path file) throws IOException {

@@ -17,7 +17,8 @@ public final class ShutdownSignal {
     private final CountDownLatch done = new CountDownLatch(1);
     private volatile boolean stopRequested;
     private volatile boolean finished;
-    private volatile int exitCode;
+    /** Until the command says otherwise, a stop that cannot finish in time is a failure (DESIGN section 7). */
+    private volatile int exitCode = 1;
     private volatile Runnable onStop = () -> { };
 
     private ShutdownSignal() {

@@ -3,7 +3,6 @@ package org.proactiverobotics.app.mission;
 import com.google.gson.JsonObject;
 import java.io.BufferedWriter;
 import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import org.proactiverobotics.engine.CommandArray;
@@ -16,6 +15,8 @@ import org.proactiverobotics.engine.Suggestion;
 final class TraceWriter implements AutoCloseable {
 
     private final BufferedWriter out;
+    /** The first write error, reported at close: a full disk must not fail the decision rule. */
+    private IOException failure;
 
     TraceWriter(Path file) throws IOException {
         this.out = Files.newBufferedWriter(file);
@@ -35,16 +36,28 @@ final class TraceWriter implements AutoCloseable {
         line.add("suggestions", entered);
         line.addProperty("winner", winner.scenario());
         line.addProperty("command", winner.command());
+        if (failure != null) {
+            return;
+        }
         try {
             out.write(line.toString());
             out.write('\n');
         } catch (IOException e) {
-            throw new UncheckedIOException("writing trace.jsonl", e);
+            failure = e;
         }
     }
 
     @Override
     public void close() throws IOException {
-        out.close();
+        try {
+            out.close();
+        } catch (IOException e) {
+            if (failure == null) {
+                failure = e;
+            }
+        }
+        if (failure != null) {
+            throw new IOException("writing trace.jsonl: " + failure.getMessage(), failure);
+        }
     }
 }
