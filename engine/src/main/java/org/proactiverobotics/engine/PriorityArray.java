@@ -1,8 +1,6 @@
 package org.proactiverobotics.engine;
 
 import java.util.Arrays;
-import java.util.Comparator;
-import java.util.stream.IntStream;
 
 /**
  * The paper's PriorityArray, the strategy: one priority per {@link CommandArray} slot; the
@@ -11,6 +9,8 @@ import java.util.stream.IntStream;
 public final class PriorityArray {
 
     private int[] priorities;
+    /** The slots by priority, computed when first asked after a change (read every iteration, set rarely). */
+    private transient int[] order;
 
     /** For Gson, which then sets the fields from the saved JSON. */
     private PriorityArray() {
@@ -33,14 +33,31 @@ public final class PriorityArray {
 
     /** Sets the priority of a slot. */
     public void set(int slot, int priority) {
-        priorities[checked(slot)] = priority;
+        if (priorities[checked(slot)] != priority) {
+            priorities[slot] = priority;
+            order = null;
+        }
     }
 
-    /** @return the slots, highest priority first; equal priorities in slot order */
+    /**
+     * @return the slots, highest priority first, equal priorities in slot order; the same array
+     *         until a priority changes (read it, don't modify it)
+     */
     public int[] slotsByPriority() {
-        return IntStream.range(0, priorities.length).boxed()
-                .sorted(Comparator.comparingInt((Integer s) -> -priorities[s]).thenComparingInt(s -> s))
-                .mapToInt(Integer::intValue).toArray();
+        int[] sorted = order;
+        if (sorted == null) {
+            sorted = new int[priorities.length];
+            for (int slot = 0; slot < sorted.length; slot++) { // insertion sort: n is a handful of slots, and stable
+                int j = slot;
+                while (j > 0 && priorities[sorted[j - 1]] < priorities[slot]) {
+                    sorted[j] = sorted[j - 1];
+                    j--;
+                }
+                sorted[j] = slot;
+            }
+            order = sorted;
+        }
+        return sorted;
     }
 
     private int checked(int slot) {

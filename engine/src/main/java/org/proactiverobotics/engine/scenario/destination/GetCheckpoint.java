@@ -15,6 +15,7 @@ import org.proactiverobotics.engine.tables.MissionTables;
  */
 public final class GetCheckpoint extends Rule {
 
+    private transient List<Checkpoint> all;
     private transient Checkpoint next;
 
     @Override
@@ -24,14 +25,14 @@ public final class GetCheckpoint extends Rule {
 
     @Override
     protected void acquireGuardData(RuleContext ctx) {
-        List<Checkpoint> all = ctx.service(MissionTables.class).checkpoints();
+        all = ctx.service(MissionTables.class).checkpoints();
         next = all.stream().filter(c -> !c.reached()).findFirst().orElse(null);
     }
 
     /** Guard: the mission has checkpoints at all (they are seeded by the robot side). */
     @Override
     protected boolean activationGuards(RuleContext ctx) {
-        return !ctx.service(MissionTables.class).checkpoints().isEmpty();
+        return !all.isEmpty();
     }
 
     /** Condition: every checkpoint is reached. */
