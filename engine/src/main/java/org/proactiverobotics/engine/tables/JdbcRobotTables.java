@@ -102,17 +102,36 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
         return queryOne("newest " + sensor + " time", sql, rs -> rs.getLong(1)).orElse(-1L);
     }
 
+    /**
+     * The exact name is compared here, not only in SQL: MySQL and MariaDB compare strings without
+     * regard to case or trailing spaces by default, so a stray row {@code 'gps'} or {@code 'GPS '},
+     * which the robot never answers (it knows {@code GPS} only), would count as pending and stop
+     * the sensor's requests for good.
+     */
     @Override
     public boolean pending(Sensor sensor) {
-        return queryOne("pending " + sensor + " request",
-                "SELECT id FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL AND sensor = ? LIMIT 1",
-                rs -> Boolean.TRUE, sensor.name()).isPresent();
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(
+                "SELECT sensor FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL AND sensor = ?")) {
+            ps.setInt(1, robotId);
+            ps.setString(2, sensor.name());
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    if (sensor.name().equals(rs.getString(1))) {
+                        return true;
+                    }
+                }
+                return false;
+            }
+        } catch (SQLException e) {
+            throw new TablesException("reading the pending " + sensor + " request of robot " + robotId, e);
+        }
     }
 
     @Override
     public void request(Sensor sensor, long iteration) {
         update("requesting " + sensor + " data",
-                "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)", sensor.name(), iteration);
+                "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)", robotId, sensor.name(),
+                iteration);
     }
 
     @Override
@@ -187,7 +206,7 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
     public void send(long iteration, long simTimeMs, String scenario, String command) {
         update("sending command '" + command + "'",
                 "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)",
-                iteration, simTimeMs, scenario, command);
+                robotId, iteration, simTimeMs, scenario, command);
     }
 
     /**
@@ -262,15 +281,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
         }
     }
 
-    /** Runs an INSERT or UPDATE; its parameters start with robot_id unless the SQL binds it elsewhere. */
+    /** Runs an INSERT or UPDATE with these parameters, in order (robot_id among them where the SQL has it). */
     private void update(String what, String sql, Object... params) {
         try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
-            if (sql.startsWith("INSERT")) {
-                ps.setInt(1, robotId);
-                bind(ps, 2, params);
-            } else {
-                bind(ps, 1, params);
-            }
+            bind(ps, 1, params);
             ps.executeUpdate();
         } catch (SQLException e) {
             throw new TablesException(what + " for robot " + robotId, e);
