@@ -39,6 +39,9 @@ class MissionEndToEndTest {
         assertThat(report.minBattery()).as("lowest battery in " + world).isGreaterThan(0.0);
         assertThat(report.ruleFailures()).isZero();
         assertThat(report.engineIterations()).isEqualTo(report.controlSteps());
+        // commandWins counts the commands the robot got: one a step once the first decision is sent.
+        long commands = report.commandWins().values().stream().mapToLong(Long::longValue).sum();
+        assertThat(commands).isBetween(report.controlSteps() - 3, report.controlSteps());
     }
 
     @Test

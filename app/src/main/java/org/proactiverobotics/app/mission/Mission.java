@@ -49,7 +49,6 @@ public final class Mission {
     private Consumer<Simulation> stepHook = sim -> { };
     private UnaryOperator<EngineTables> engineTables = UnaryOperator.identity();
     private TraceWriter trace;
-    private String decidedScenario = "none";
     private String drivingScenario = "none";
     private long lastDecisionSimTimeMs;
 
@@ -131,6 +130,11 @@ public final class Mission {
 
     private MissionReport run(Simulation sim, EngineSide engine, ProactiveController controller, Path outDir)
             throws IOException {
+        // Counted as the robot gets them, as the robot process counts them: the same commandWins either way.
+        controller.onCommand(command -> {
+            commandWins.merge(command.scenario(), 1L, Long::sum);
+            drivingScenario = command.scenario();
+        });
         try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"))) {
             this.trace = traceWriter;
             MissionReport report = loop(sim, engine, controller);
@@ -202,11 +206,8 @@ public final class Mission {
                         round(engineNs / 1e6 / steps, 4)));
     }
 
-    /** The decision of iteration k is sent in iteration k+1 (SendRobotCommand), executed from step k+1. */
+    /** Every decision goes to trace.jsonl (the command it leads to is sent in the next iteration). */
     private void decided(long iteration, CommandArray suggestions, Suggestion winner) {
-        drivingScenario = decidedScenario;
-        decidedScenario = winner.scenario();
-        commandWins.merge(winner.scenario(), 1L, Long::sum);
         trace.decision(iteration, lastDecisionSimTimeMs, suggestions, winner);
     }
 
