@@ -23,7 +23,7 @@ GRANT SELECT ON `@DATABASE@`.battery_recharged TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.robot_clock TO '@ENGINE_USER@'@'@HOST@';
 -- it marks checkpoints reached (and not reached when a new robot run starts)
-GRANT SELECT, UPDATE ON `@DATABASE@`.checkpoints TO '@ENGINE_USER@'@'@HOST@';
+GRANT SELECT, UPDATE (reached, reached_sim_time_ms) ON `@DATABASE@`.checkpoints TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_comments TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.sensor_requests TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.strategy TO '@ENGINE_USER@'@'@HOST@';
@@ -39,7 +39,7 @@ GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.iudata TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.distance_sensor_data TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.battery_level TO '@ROBOT_USER@'@'@HOST@';
 -- it marks requests answered, and prunes answered ones
-GRANT SELECT, UPDATE, DELETE ON `@DATABASE@`.sensor_requests TO '@ROBOT_USER@'@'@HOST@';
+GRANT SELECT, UPDATE (answered_sim_time_ms) ON `@DATABASE@`.sensor_requests TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.engine_comments TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.engine_clock TO '@ROBOT_USER@'@'@HOST@';
 -- the mission rows, seeded from the world file once per robot id

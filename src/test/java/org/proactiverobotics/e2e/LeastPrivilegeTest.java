@@ -75,6 +75,14 @@ class LeastPrivilegeTest {
                 + "VALUES (99, 1, 0, 0, 'sync', 'RUNNING')")).hasMessageContaining("denied");
         assertThatThrownBy(() -> asRobot("INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (99, 1, 0, 0)"))
                 .hasMessageContaining("denied");
+        // Column grants: the engine may only mark checkpoints, the robot may only mark requests answered.
+        assertThatThrownBy(() -> asEngine("UPDATE checkpoints SET x_m = 0 WHERE robot_id = 99"))
+                .hasMessageContaining("denied");
+        asRobot("UPDATE sensor_requests SET answered_sim_time_ms = 0 WHERE robot_id = 99");
+        assertThatThrownBy(() -> asRobot("UPDATE sensor_requests SET sensor = 'GPS' WHERE robot_id = 99"))
+                .hasMessageContaining("denied");
+        assertThatThrownBy(() -> asRobot("DELETE FROM sensor_requests WHERE robot_id = 99"))
+                .hasMessageContaining("denied");
     }
 
     @Test

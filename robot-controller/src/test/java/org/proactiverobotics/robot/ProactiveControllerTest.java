@@ -293,7 +293,8 @@ class ProactiveControllerTest {
                 assertThat(engine.count("iudata")).isBetween(20L, 30L);
                 assertThat(engine.count("battery_level")).isBetween(20L, 31L);
                 assertThat(engine.count("distance_sensor_data")).isBetween(20L * 8, 30L * 8);
-                assertThat(engine.count("sensor_requests")).isBetween(20L, 30L);
+                assertThat(engine.count("sensor_requests")).as("the engine's table: not pruned by the robot")
+                        .isGreaterThanOrEqualTo(1200L);
                 assertThat(robot.stats().rowsPruned()).isGreaterThan(0);
             }
         }

@@ -234,15 +234,12 @@ public final class JdbcRobotLink implements RobotLink {
                                 + keep,
                         "DELETE FROM " + table + " WHERE robot_id = ? AND id <= ?");
             }
-            // One distance reading = the rows sharing a sim_time_ms; served by idx_ds_newest.
+            // One distance reading = the rows sharing a sim_time_ms; served by idx_ds_time.
             deleted += pruneBy(c, robotId,
                     "SELECT DISTINCT robot_id, sim_time_ms FROM distance_sensor_data WHERE robot_id = ? "
                             + "ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1 OFFSET " + keep,
                     "DELETE FROM distance_sensor_data WHERE robot_id = ? AND sim_time_ms <= ?");
-            deleted += pruneBy(c, robotId,
-                    "SELECT robot_id, id FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL "
-                            + "ORDER BY id DESC LIMIT 1 OFFSET " + keep,
-                    "DELETE FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NOT NULL AND id <= ?");
+            // sensor_requests is the engine's table: the engine prunes its answered rows.
             return deleted;
         });
     }

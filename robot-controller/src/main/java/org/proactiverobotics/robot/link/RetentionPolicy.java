@@ -6,9 +6,9 @@ package org.proactiverobotics.robot.link;
  * {@code everySteps} control steps: the readings it writes ({@code gps_stored_values},
  * {@code iudata}, {@code battery_level}: the newest {@code keepReadings} rows each;
  * {@code distance_sensor_data}: the newest {@code keepReadings} readings, i.e. that many rows
- * per sensor) and the requests it has answered ({@code sensor_requests}: the newest
- * {@code keepReadings} answered rows; pending ones are never touched).
- * {@code engine_comments} and the mission rows belong to the engine and are not pruned here.
+ * per sensor). {@code sensor_requests}, {@code engine_comments} and the mission rows belong to
+ * the engine, which bounds its own history; the robot only reads them (and marks requests
+ * answered), so its database user needs no DELETE there.
  *
  * @param keepReadings how many newest readings of each sensor to keep (at least 1)
  * @param everySteps   prune every this many control steps (at least 1)
