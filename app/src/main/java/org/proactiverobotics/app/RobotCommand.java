@@ -12,6 +12,7 @@ import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.app.deploy.Heartbeat;
 import org.proactiverobotics.app.deploy.RobotProcess;
+import org.proactiverobotics.app.deploy.StoredMission;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.mission.MissionReport;
@@ -123,6 +124,10 @@ public final class RobotCommand implements Callable<Integer> {
             err.println(e.getMessage());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
+        } catch (StoredMission.Mismatch e) {
+            err.println(e.getMessage());
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
         }
         try {
             RunCommand.writeReport(report, outDir.resolve("report.json"));

@@ -2,12 +2,14 @@ package org.proactiverobotics.app.deploy;
 
 import com.zaxxer.hikari.HikariDataSource;
 import java.util.Locale;
+import java.sql.SQLException;
 import java.util.Map;
 import java.util.TreeMap;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.robot.LoopTimes;
 import org.proactiverobotics.robot.Lockstep;
+import org.proactiverobotics.robot.Missions;
 import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.robot.RobotConfig;
 import org.proactiverobotics.robot.StepGate;
@@ -72,6 +74,7 @@ public final class RobotProcess {
         Map<String, Long> wins = new TreeMap<>();
         try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password());
              ProactiveController robot = new ProactiveController(sim, new JdbcRobotLink(pool), config)) {
+            checkStoredMission(pool, robotId, world);
             robot.onCommand(c -> wins.merge(c.scenario(), 1L, Long::sum));
             signal.onStop(robot::requestStop);
             Lockstep lockstep = new Lockstep(new JdbcRobotClock(pool), robotId, options.timing(),
@@ -164,6 +167,15 @@ public final class RobotProcess {
                         String.format(Locale.ROOT, "%.1f", truth.batteryPct()),
                         String.format(Locale.ROOT, "%.1f", truth.distanceM()), truth.collisions());
             }
+        }
+    }
+
+    /** A robot may not take over another world's mission rows (see {@link StoredMission}). */
+    private static void checkStoredMission(HikariDataSource pool, int robotId, WorldSpec world) {
+        try {
+            StoredMission.check(pool, robotId, Missions.of(world));
+        } catch (SQLException e) {
+            throw new IllegalStateException("reading the stored mission of robot " + robotId + ": " + e.getMessage(), e);
         }
     }
 }
