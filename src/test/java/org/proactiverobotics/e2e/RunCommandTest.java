@@ -68,6 +68,14 @@ class RunCommandTest {
     }
 
     @Test
+    void aNegativeRobotIdIsBadInputAndWritesNothing() {
+        Path outDir = tmp.resolve("never");
+        assertThat(run("run", "--robot-id", "-4", "--out", outDir.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("--robot-id");
+        assertThat(outDir).doesNotExist();
+    }
+
+    @Test
     void anUnknownOptionIsAUsageErrorWithExitTwo() {
         assertThat(run("run", "--wrld", "x.json")).isEqualTo(2);
         assertThat(err.toString()).contains("--wrld");

@@ -74,6 +74,11 @@ public final class RunCommand implements Callable<Integer> {
                     + "no database: what the middleware costs is the difference). Default: ${DEFAULT-VALUE}.")
     private String link;
 
+    @Option(names = "--robot-id", paramLabel = "N", defaultValue = "1",
+            description = "The robot's id in the shared tables; a run starts a clean mission for it (its earlier rows"
+                    + " in --db are deleted). Default: ${DEFAULT-VALUE}.")
+    private int robotId;
+
     @Option(names = "--quiet", description = "No live progress line.")
     private boolean quiet;
 
@@ -90,6 +95,11 @@ public final class RunCommand implements Callable<Integer> {
         } catch (WorldValidationException e) {
             err.println((world == null ? DEFAULT_WORLD : world) + ": invalid world file:");
             e.problems().forEach(err::println);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        if (robotId < 0) {
+            err.println("--robot-id must be >= 0: " + robotId);
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
@@ -119,7 +129,7 @@ public final class RunCommand implements Callable<Integer> {
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         String url = db != null ? db : Databases.embeddedH2Url("proactive_run_" + System.nanoTime());
         MissionOptions options = new MissionOptions(spec, url, db != null ? dbUser : "sa", db != null ? dbPassword : "",
-                strategy, 1).withLink(layer);
+                strategy, robotId).withLink(layer);
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {
