@@ -97,8 +97,14 @@ public final class Schema {
         return names;
     }
 
-    /** Splits a script on semicolons that end a line; "--" comments are dropped. */
-    static List<String> split(String script) {
+    /**
+     * Splits an SQL script into statements: a statement ends with ';' at the end of a line, and
+     * "--" comment lines are dropped.
+     *
+     * @param script the script
+     * @return its statements, without their ';'
+     */
+    public static List<String> split(String script) {
         List<String> out = new ArrayList<>();
         StringBuilder current = new StringBuilder();
         for (String line : script.split("\n")) {

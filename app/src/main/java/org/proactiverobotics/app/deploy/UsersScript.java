@@ -4,9 +4,9 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Pattern;
+import org.proactiverobotics.db.Schema;
 
 /**
  * The least-privilege users script, deploy/users.sql (packaged in the jar), filled in: the same
@@ -95,20 +95,6 @@ public final class UsersScript {
      * @return its statements, "--" comment lines dropped (a statement ends with ';' at a line end)
      */
     public static List<String> statements(String script) {
-        List<String> out = new ArrayList<>();
-        StringBuilder current = new StringBuilder();
-        for (String line : script.split("\n")) {
-            String trimmed = line.strip();
-            if (trimmed.isEmpty() || trimmed.startsWith("--")) {
-                continue;
-            }
-            current.append(line).append('\n');
-            if (trimmed.endsWith(";")) {
-                String sql = current.toString().strip();
-                out.add(sql.substring(0, sql.length() - 1));
-                current.setLength(0);
-            }
-        }
-        return out;
+        return Schema.split(script);
     }
 }
