@@ -56,9 +56,13 @@ public final class Steering {
      * @param speedMps forward speed, metres per second
      * @param turnRadS turn rate, radians per second, counter-clockwise positive
      * @param profile  the robot's drive
-     * @return the command text
+     * @return the command text; STOP when an input is not a finite number (a corrupt target, say):
+     *         the engine never sends a command the robot would refuse
      */
     public static String drive(double speedMps, double turnRadS, DriveProfile profile) {
+        if (!Double.isFinite(speedMps) || !Double.isFinite(turnRadS)) {
+            return STOP;
+        }
         double half = turnRadS * profile.axleWidthM() / 2.0;
         double left = speedMps - half;
         double right = speedMps + half;
