@@ -26,7 +26,8 @@ import org.proactiverobotics.engine.Algorithm;
  *
  * <p>Threads: with {@code --threads 1} (default) one thread steps the robots round-robin; with
  * T, the robots are split into T fixed groups stepped in parallel, the round ending when every
- * group is done. The engines share one pool (as one engine process serving every robot would);
+ * group is done; {@code --threads per-robot}: one thread per robot (a client-server database
+ * spends most of a step waiting for round trips and commits, which threads overlap). The engines share one pool (as one engine process serving every robot would);
  * each robot has a pool of its own (as a robot process has).
  *
  * <p>A plain harness, not JMH: each N is one long run of a stateful system; the figure is a
@@ -38,8 +39,9 @@ import org.proactiverobotics.engine.Algorithm;
  *     --db 'jdbc:mariadb://127.0.0.1:3306/proactive_bench?user=root&amp;password='
  * java -cp bench/target/benchmarks.jar org.proactiverobotics.bench.mission.ManyRobots --robots auto --link direct
  * </pre>
- * Options: {@code --robots auto|N,N,...} (auto: double N while the robots keep up, then bisect),
- * {@code --threads T} (1), {@code --link jdbc|direct} (jdbc), {@code --db URL} (embedded H2, a
+ * Options: {@code --robots auto|N,N,...} (auto: double N from {@code --start N} (1) while the robots keep
+ * up, then bisect),
+ * {@code --threads T|per-robot} (1), {@code --link jdbc|direct} (jdbc), {@code --db URL} (embedded H2, a
  * fresh in-memory database per N), {@code --user U --password P}, {@code --warmup-s S} (5),
  * {@code --measure-s S} (30), {@code --step-ms MS} (32).
  */
@@ -52,8 +54,8 @@ public final class ManyRobots {
         Workload.quietLogs();
         Map<String, String> opt = LongRun.Args.parse(args);
         Config cfg = new Config(opt);
-        System.out.printf(Locale.ROOT, "ManyRobots link=%s db=%s threads=%d warmup=%ds measure=%ds step=%dms load=%s%n",
-                cfg.direct ? "direct" : "jdbc", cfg.direct ? "-" : LongRun.Args.kind(cfg.url(1)), cfg.threads, cfg.warmupS,
+        System.out.printf(Locale.ROOT, "ManyRobots link=%s db=%s threads=%s warmup=%ds measure=%ds step=%dms load=%s%n",
+                cfg.direct ? "direct" : "jdbc", cfg.direct ? "-" : LongRun.Args.kind(cfg.url(1)), cfg.threads > 0 ? String.valueOf(cfg.threads) : "per-robot", cfg.warmupS,
                 cfg.measureS, cfg.stepMs, LongRun.Args.load());
         System.out.println("| robots | rounds | round mean ms | p50 | p95 | p99 | max | ms / robot-step (engine / robot / physics) | keeps up | laps | collisions | load |");
         System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|");
@@ -66,7 +68,7 @@ public final class ManyRobots {
         }
         int good = 0;
         int bad = -1;
-        for (int n = 1; bad < 0; n *= 2) {
+        for (int n = Integer.parseInt(opt.getOrDefault("start", "1")); bad < 0; n *= 2) {
             if (run(cfg, n)) {
                 good = n;
             } else {
@@ -88,11 +90,12 @@ public final class ManyRobots {
     private static boolean run(Config cfg, int n) throws Exception {
         List<Rig> rigs = new ArrayList<>();
         HikariDataSource enginePool = null;
-        ExecutorService pool = cfg.threads > 1 ? Executors.newFixedThreadPool(cfg.threads) : null;
+        int threads = cfg.threads > 0 ? cfg.threads : n;
+        ExecutorService pool = threads > 1 ? Executors.newFixedThreadPool(threads) : null;
         try {
             if (!cfg.direct) {
                 var config = Databases.config(cfg.url(n), cfg.user, cfg.password);
-                config.setMaximumPoolSize(Math.max(4, cfg.threads + 1));
+                config.setMaximumPoolSize(Math.max(4, threads + 1));
                 enginePool = new HikariDataSource(config);
             }
             for (int i = 0; i < n; i++) {
@@ -100,10 +103,10 @@ public final class ManyRobots {
                         : Rig.jdbc(Worlds.forRobot(i), i + 1, enginePool, cfg.url(n), cfg.user, cfg.password));
             }
             List<Callable<Void>> groups = new ArrayList<>();
-            for (int t = 0; t < cfg.threads; t++) {
+            for (int t = 0; t < threads; t++) {
                 int first = t;
                 groups.add(() -> {
-                    for (int i = first; i < rigs.size(); i += cfg.threads) {
+                    for (int i = first; i < rigs.size(); i += threads) {
                         rigs.get(i).step();
                     }
                     return null;
@@ -202,7 +205,8 @@ public final class ManyRobots {
             boolean h2 = db == null || db.startsWith("jdbc:h2:");
             user = opt.getOrDefault("user", h2 ? "sa" : null);
             password = opt.getOrDefault("password", h2 ? "" : null);
-            threads = Integer.parseInt(opt.getOrDefault("threads", "1"));
+            String t = opt.getOrDefault("threads", "1");
+            threads = t.equals("per-robot") ? 0 : Integer.parseInt(t);
             warmupS = Integer.parseInt(opt.getOrDefault("warmup-s", "5"));
             measureS = Integer.parseInt(opt.getOrDefault("measure-s", "30"));
             stepMs = Integer.parseInt(opt.getOrDefault("step-ms", "32"));
