@@ -71,6 +71,9 @@ final class Rig implements AutoCloseable {
     long physicsNs;
     long steps;
     long lapsDone;
+    /** Engine iterations that threw (rolled back; the engine goes on, as the engine process's loop does). */
+    long failedIterations;
+    String lastFailure;
 
     private Rig(int robotId, WorldSpec world, Simulation sim, ProactiveController controller,
                 Supplier<IterationSummary> iterate, DataSource rearmPool, Laps laps, AutoCloseable owned) {
@@ -198,7 +201,12 @@ final class Rig implements AutoCloseable {
         long t0 = System.nanoTime();
         controller.sense();
         long t1 = System.nanoTime();
-        iterate.get();
+        try {
+            iterate.get();
+        } catch (RuntimeException e) {
+            failedIterations++;
+            lastFailure = e.getMessage();
+        }
         long t2 = System.nanoTime();
         controller.act();
         long t3 = System.nanoTime();
