@@ -70,6 +70,9 @@ public final class Databases {
         config.setValidationTimeout(1_000);
         // Fail on first use rather than at construction, so callers can wait for a database.
         config.setInitializationFailTimeout(-1);
+        // H2's level on every database: InnoDB's default (repeatable read) takes gap locks, and
+        // engines saving their first state at the same moment deadlocked on them.
+        config.setTransactionIsolation("TRANSACTION_READ_COMMITTED");
         config.setPoolName("proactive-" + (user == null ? "pool" : user));
         return config;
     }
