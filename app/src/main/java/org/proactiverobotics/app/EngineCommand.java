@@ -2,13 +2,12 @@ package org.proactiverobotics.app;
 
 import com.zaxxer.hikari.HikariDataSource;
 import java.io.PrintWriter;
-import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
+import org.proactiverobotics.app.deploy.ProcessOptions;
 import org.proactiverobotics.app.deploy.EngineClock;
 import org.proactiverobotics.app.deploy.EngineLoop;
-import org.proactiverobotics.app.deploy.Heartbeat;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.mission.EngineSide;
@@ -39,8 +38,8 @@ public final class EngineCommand implements Callable<Integer> {
     @Mixin
     private DbOptions db;
 
-    @Option(names = "--robot-id", paramLabel = "N", defaultValue = "1", description = "The robot's id in every table. Default: ${DEFAULT-VALUE}.")
-    private int robotId;
+    @Mixin
+    private ProcessOptions process;
 
     @Option(names = "--strategy", paramLabel = "NAME", defaultValue = Strategies.SAFETY_FIRST,
             completionCandidates = RunCommand.StrategyNames.class,
@@ -63,13 +62,7 @@ public final class EngineCommand implements Callable<Integer> {
             description = "Real-time timing: one iteration every this many ms. Default: ${DEFAULT-VALUE}.")
     private long periodMs;
 
-    @Option(names = "--log-every", paramLabel = "N", defaultValue = "500",
-            description = "One INFO line every N iterations (details at DEBUG: PROACTIVE_LOG_LEVEL=DEBUG). Default: ${DEFAULT-VALUE}.")
-    private long logEvery;
 
-    @Option(names = "--heartbeat", paramLabel = "FILE",
-            description = "A file touched every few seconds while the loop runs (for a container health check).")
-    private Path heartbeat;
 
     @Spec
     private CommandSpec spec;
@@ -105,9 +98,9 @@ public final class EngineCommand implements Callable<Integer> {
             return Main.EXIT_INFRASTRUCTURE;
         }
         try (HikariDataSource pool = Databases.pool(db.url(), db.user(), db.password())) {
-            EngineSide side = EngineSide.build(pool, robotId, new DriveProfile(maxSpeedMps, axleWidthM), null);
-            EngineLoop loop = new EngineLoop(side, new EngineClock(pool, robotId), robotId,
-                    new EngineLoop.Options(strategy, fresh, periodMs, logEvery), signal::stopRequested, new Heartbeat(heartbeat));
+            EngineSide side = EngineSide.build(pool, process.robotId(), new DriveProfile(maxSpeedMps, axleWidthM), null);
+            EngineLoop loop = new EngineLoop(side, new EngineClock(pool, process.robotId()), process.robotId(),
+                    new EngineLoop.Options(strategy, fresh, periodMs, process.logEvery()), signal::stopRequested, process.heartbeat());
             loop.run();
             return 0;
         } catch (CorruptStateException e) {
@@ -123,9 +116,6 @@ public final class EngineCommand implements Callable<Integer> {
         if (dbProblem != null) {
             return dbProblem;
         }
-        if (robotId < 0) {
-            return "--robot-id must be >= 0: " + robotId;
-        }
         if (!Strategies.names().contains(strategy)) {
             return "unknown strategy '" + strategy + "'; known: " + String.join(", ", Strategies.names());
         }
@@ -138,9 +128,6 @@ public final class EngineCommand implements Callable<Integer> {
         if (periodMs < 1) {
             return "--period-ms must be >= 1: " + periodMs;
         }
-        if (logEvery < 1) {
-            return "--log-every must be >= 1: " + logEvery;
-        }
-        return null;
+        return process.problem();
     }
 }

@@ -10,7 +10,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
-import org.proactiverobotics.app.deploy.Heartbeat;
+import org.proactiverobotics.app.deploy.ProcessOptions;
 import org.proactiverobotics.app.deploy.RobotProcess;
 import org.proactiverobotics.app.deploy.StoredMission;
 import org.proactiverobotics.app.deploy.ServiceLogging;
@@ -47,8 +47,8 @@ public final class RobotCommand implements Callable<Integer> {
     @Mixin
     private DbOptions db;
 
-    @Option(names = "--robot-id", paramLabel = "N", defaultValue = "1", description = "The robot's id in every table. Default: ${DEFAULT-VALUE}.")
-    private int robotId;
+    @Mixin
+    private ProcessOptions process;
 
     @Option(names = "--out", paramLabel = "DIR",
             description = "Output directory for report.json. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
@@ -62,13 +62,7 @@ public final class RobotCommand implements Callable<Integer> {
             description = "Realtime timing: simulated seconds per wall second (2 = twice as fast). Default: ${DEFAULT-VALUE}.")
     private double realTimeFactor;
 
-    @Option(names = "--log-every", paramLabel = "N", defaultValue = "500",
-            description = "One INFO line every N control steps. Default: ${DEFAULT-VALUE}.")
-    private long logEvery;
 
-    @Option(names = "--heartbeat", paramLabel = "FILE",
-            description = "A file touched every few seconds while the robot steps (for a container health check).")
-    private Path heartbeat;
 
     @Spec
     private CommandSpec spec;
@@ -114,12 +108,12 @@ public final class RobotCommand implements Callable<Integer> {
 
     private int runMission(WorldSpec worldSpec, Path outDir, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
         Lockstep.Timing mode = Lockstep.Timing.valueOf(timing.toUpperCase(Locale.ROOT));
-        stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", robotId, worldSpec.name(), db.url(), mode.label());
+        stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), db.url(), mode.label());
         stdout.flush();
         MissionReport report;
         try {
-            report = new RobotProcess(new RobotProcess.Options(worldSpec, db, robotId, mode, realTimeFactor, logEvery,
-                    new Heartbeat(heartbeat)), signal).run();
+            report = new RobotProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor, process.logEvery(),
+                    process.heartbeat()), signal).run();
         } catch (DatabaseWait.Unreachable e) {
             err.println(e.getMessage());
             err.flush();
@@ -151,18 +145,12 @@ public final class RobotCommand implements Callable<Integer> {
         if (dbProblem != null) {
             return dbProblem;
         }
-        if (robotId < 0) {
-            return "--robot-id must be >= 0: " + robotId;
-        }
         if (!timing.equals("sync") && !timing.equals("realtime")) {
             return "--timing must be sync or realtime: " + timing;
         }
         if (!(realTimeFactor > 0) || Double.isInfinite(realTimeFactor)) {
             return "--real-time-factor must be a positive number: " + realTimeFactor;
         }
-        if (logEvery < 1) {
-            return "--log-every must be >= 1: " + logEvery;
-        }
-        return null;
+        return process.problem();
     }
 }
