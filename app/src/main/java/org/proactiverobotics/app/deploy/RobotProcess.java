@@ -1,8 +1,8 @@
 package org.proactiverobotics.app.deploy;
 
 import com.zaxxer.hikari.HikariDataSource;
-import java.util.Locale;
 import java.sql.SQLException;
+import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import org.proactiverobotics.app.mission.MissionReport;
@@ -92,47 +92,20 @@ public final class RobotProcess {
         }
     }
 
-    /** The same order of checks as the one-process mission. */
+    /** The one-process mission's checks; a robot stopped before any of them holds was stopped. */
     private static Outcome outcome(Simulation sim) {
-        GroundTruth truth = sim.groundTruth();
-        if (truth.checkpointsReached() == truth.checkpointsTotal()) {
-            return Outcome.MISSION_ACCOMPLISHED;
-        }
-        if (truth.batteryPct() <= 0.0) {
-            return Outcome.BATTERY_DEPLETED;
-        }
-        if (sim.timeLimitReached()) {
-            return Outcome.TIME_LIMIT;
-        }
-        return Outcome.STOPPED;
+        Outcome outcome = Outcome.of(sim);
+        return outcome == null ? Outcome.STOPPED : outcome;
     }
 
     private MissionReport report(Simulation sim, Outcome outcome, double wallS, LoopTimes times, Map<String, Long> wins,
                                  long engineIterations) {
-        GroundTruth truth = sim.groundTruth();
-        double simS = sim.simTimeMs() / 1000.0;
         long steps = times == null ? 0 : times.steps();
         MissionReport.Timing timing = times == null ? null
-                : new MissionReport.Timing(round(times.physicsMs(), 4), round(times.senseMs() + times.actMs(), 4),
-                round(times.waitMs(), 4));
+                : MissionReport.Timing.rounded(times.physicsMs(), times.senseMs() + times.actMs(), times.waitMs());
         // strategy: the engine's (the robot user may not read it); ruleFailures: -1, the robot cannot see them
-        return new MissionReport(options.world().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, null,
-                databaseKind(options.db().url()), truth.checkpointsReached(), truth.checkpointsTotal(), simS,
-                round(wallS, 3), round(simS / Math.max(wallS, 1e-9), 1), steps, engineIterations,
-                round(truth.distanceM(), 3), truth.collisions(), round(truth.minClearanceM(), 4),
-                round(truth.minBatteryPct(), 2), round(truth.batteryPct(), 2), truth.recharges(), Map.copyOf(wins), -1,
-                timing);
-    }
-
-    static String databaseKind(String jdbcUrl) {
-        String rest = jdbcUrl.startsWith("jdbc:") ? jdbcUrl.substring(5) : jdbcUrl;
-        int colon = rest.indexOf(':');
-        return colon < 0 ? rest : rest.substring(0, colon);
-    }
-
-    private static double round(double value, int decimals) {
-        double scale = Math.pow(10, decimals);
-        return Math.round(value * scale) / scale;
+        return MissionReport.of(sim, outcome, null, MissionReport.databaseKind(options.db().url()), wallS, steps,
+                engineIterations, wins, -1, timing);
     }
 
     /** The lockstep gate plus one INFO line every N steps and the heartbeat. */

@@ -148,7 +148,6 @@ public final class Mission {
     }
 
     private MissionReport loop(Simulation sim, EngineSide engine, ProactiveController controller) {
-        WorldSpec world = options.world();
         GroundTruth truth = sim.groundTruth();
         long physicsNs = 0;
         long robotNs = 0;
@@ -181,29 +180,17 @@ public final class Mission {
                 markers.add(new SvgRenderer.Marker(truth.x(), truth.y(), "recharge " + recharges));
             }
             stepHook.accept(sim);
-            if (truth.checkpointsReached() == truth.checkpointsTotal()) {
-                outcome = Outcome.MISSION_ACCOMPLISHED;
-                break;
-            }
-            if (truth.batteryPct() <= 0.0) {
-                outcome = Outcome.BATTERY_DEPLETED;
-                break;
-            }
-            if (sim.timeLimitReached()) {
-                outcome = Outcome.TIME_LIMIT;
+            outcome = Outcome.of(sim);
+            if (outcome != null) {
                 break;
             }
         }
         double wallS = (System.nanoTime() - start) / 1e9;
-        double simS = sim.simTimeMs() / 1000.0;
-        return new MissionReport(world.name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, options.strategy(),
-                options.link() == MissionOptions.Link.DIRECT ? "direct" : databaseKind(options.jdbcUrl()), truth.checkpointsReached(), truth.checkpointsTotal(), simS,
-                round(wallS, 3), round(simS / Math.max(wallS, 1e-9), 1), steps, engine.engine().iteration(),
-                round(truth.distanceM(), 3), truth.collisions(), round(truth.minClearanceM(), 4),
-                round(truth.minBatteryPct(), 2), round(truth.batteryPct(), 2), truth.recharges(),
-                Map.copyOf(commandWins), failures,
-                new MissionReport.Timing(round(physicsNs / 1e6 / steps, 4), round(robotNs / 1e6 / steps, 4),
-                        round(engineNs / 1e6 / steps, 4)));
+        String database = options.link() == MissionOptions.Link.DIRECT ? "direct"
+                : MissionReport.databaseKind(options.jdbcUrl());
+        return MissionReport.of(sim, outcome, options.strategy(), database, wallS, steps, engine.engine().iteration(),
+                commandWins, failures, MissionReport.Timing.rounded(physicsNs / 1e6 / steps, robotNs / 1e6 / steps,
+                        engineNs / 1e6 / steps));
     }
 
     /** Every decision goes to trace.jsonl (the command it leads to is sent in the next iteration). */
@@ -236,16 +223,5 @@ public final class Mission {
                 }
             }
         }
-    }
-
-    static String databaseKind(String jdbcUrl) {
-        String rest = jdbcUrl.startsWith("jdbc:") ? jdbcUrl.substring(5) : jdbcUrl;
-        int colon = rest.indexOf(':');
-        return colon < 0 ? rest : rest.substring(0, colon);
-    }
-
-    private static double round(double value, int decimals) {
-        double scale = Math.pow(10, decimals);
-        return Math.round(value * scale) / scale;
     }
 }

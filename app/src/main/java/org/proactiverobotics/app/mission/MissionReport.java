@@ -1,5 +1,8 @@
 package org.proactiverobotics.app.mission;
 
+import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.Simulation;
+
 import java.util.Map;
 
 /**
@@ -52,6 +55,45 @@ public record MissionReport(
         Timing timing) {
 
     /**
+     * A report whose ground-truth fields are read from the simulation (rounded as in report.json).
+     *
+     * @param sim              the simulation, at the mission's end
+     * @param outcome          how it ended
+     * @param strategy         the strategy the run started with, or null when unknown
+     * @param database         the kind of database ({@link #databaseKind}) or "direct"
+     * @param wallTimeS        wall-clock seconds of the mission loop
+     * @param controlSteps     robot control steps
+     * @param engineIterations engine iterations
+     * @param commandWins      commands the robot got, by scenario
+     * @param ruleFailures     rule parts that threw (-1 when the runner cannot see them)
+     * @param timing           mean wall time per control step by phase, or null
+     * @return the report
+     */
+    public static MissionReport of(Simulation sim, Outcome outcome, String strategy, String database, double wallTimeS,
+                                   long controlSteps, long engineIterations, Map<String, Long> commandWins,
+                                   long ruleFailures, Timing timing) {
+        GroundTruth truth = sim.groundTruth();
+        double simS = sim.simTimeMs() / 1000.0;
+        return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, strategy, database,
+                truth.checkpointsReached(), truth.checkpointsTotal(), simS, round(wallTimeS, 3),
+                round(simS / Math.max(wallTimeS, 1e-9), 1), controlSteps, engineIterations, round(truth.distanceM(), 3),
+                truth.collisions(), round(truth.minClearanceM(), 4), round(truth.minBatteryPct(), 2),
+                round(truth.batteryPct(), 2), truth.recharges(), Map.copyOf(commandWins), ruleFailures, timing);
+    }
+
+    /** @return the database kind a JDBC URL names: "h2", "mariadb", "mysql", ... */
+    public static String databaseKind(String jdbcUrl) {
+        String rest = jdbcUrl.startsWith("jdbc:") ? jdbcUrl.substring(5) : jdbcUrl;
+        int colon = rest.indexOf(':');
+        return colon < 0 ? rest : rest.substring(0, colon);
+    }
+
+    private static double round(double value, int decimals) {
+        double scale = Math.pow(10, decimals);
+        return Math.round(value * scale) / scale;
+    }
+
+    /**
      * Mean wall time per control step, by phase, milliseconds.
      *
      * @param physicsMs  the dyn4j step and sensor sampling
@@ -59,5 +101,10 @@ public record MissionReport(
      * @param engineMs   one engine iteration (rules, their database work, saving state)
      */
     public record Timing(double physicsMs, double robotIoMs, double engineMs) {
+
+        /** @return the timing rounded to microseconds, as report.json shows it */
+        public static Timing rounded(double physicsMs, double robotIoMs, double engineMs) {
+            return new Timing(round(physicsMs, 4), round(robotIoMs, 4), round(engineMs, 4));
+        }
     }
 }

@@ -1,5 +1,8 @@
 package org.proactiverobotics.app.mission;
 
+import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.Simulation;
+
 /** How a mission ended, as written in report.json's {@code outcome}. */
 public enum Outcome {
     /** Every checkpoint reached, in order. */
@@ -9,5 +12,26 @@ public enum Outcome {
     /** The battery ran flat. */
     BATTERY_DEPLETED,
     /** The robot process was stopped (SIGTERM / Ctrl-C) before the mission ended. */
-    STOPPED
+    STOPPED;
+
+    /**
+     * How the mission stands after a step, judged on the simulator's ground truth, in the one
+     * order every runner uses.
+     *
+     * @param sim the simulation
+     * @return the outcome, or null while the mission goes on
+     */
+    public static Outcome of(Simulation sim) {
+        GroundTruth truth = sim.groundTruth();
+        if (truth.checkpointsReached() == truth.checkpointsTotal()) {
+            return MISSION_ACCOMPLISHED;
+        }
+        if (truth.batteryPct() <= 0.0) {
+            return BATTERY_DEPLETED;
+        }
+        if (sim.timeLimitReached()) {
+            return TIME_LIMIT;
+        }
+        return null;
+    }
 }
