@@ -198,8 +198,8 @@ public final class EngineLoop {
 
     /** A strategy changed with the strategy command survives restarts: write ours only when none is set. */
     private void writeStrategyIfNone() {
-        if (side.tables().read().isEmpty()) {
-            side.tables().write(Strategies.named(options.strategy()));
+        if (side.links().strategy().read().isEmpty()) {
+            side.links().strategy().write(Strategies.named(options.strategy()));
             LOG.info("engine {}: strategy {} written", robotId, options.strategy());
         }
     }

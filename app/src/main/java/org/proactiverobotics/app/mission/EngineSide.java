@@ -47,16 +47,13 @@ public final class EngineSide {
 
     private final ProactiveEngine engine;
     private final EngineTables links;
-    private final JdbcRobotTables tables;
     private final IterationTransaction transaction;
     /** An iteration ran in memory but its transaction did not commit. */
     private boolean aheadOfDatabase;
 
-    private EngineSide(ProactiveEngine engine, EngineTables links, JdbcRobotTables tables,
-                       IterationTransaction transaction) {
+    private EngineSide(ProactiveEngine engine, EngineTables links, IterationTransaction transaction) {
         this.engine = engine;
         this.links = links;
-        this.tables = tables;
         this.transaction = transaction;
     }
 
@@ -90,7 +87,7 @@ public final class EngineSide {
         // The rules' writes and the saved state of an iteration commit together, once.
         IterationTransaction transaction = new IterationTransaction(dataSource);
         JdbcRobotTables tables = new JdbcRobotTables(transaction, robotId);
-        return build(decorate.apply(EngineTables.of(tables)), tables, transaction, new JdbcStateStore(transaction),
+        return build(decorate.apply(EngineTables.of(tables)), transaction, new JdbcStateStore(transaction),
                 robotId, profile, observer);
     }
 
@@ -107,11 +104,11 @@ public final class EngineSide {
      */
     public static EngineSide build(EngineTables tables, StateStore store, int robotId, DriveProfile profile,
                                    DecisionObserver observer) {
-        return build(tables, null, null, store, robotId, profile, observer);
+        return build(tables, null, store, robotId, profile, observer);
     }
 
-    private static EngineSide build(EngineTables tables, JdbcRobotTables jdbc, IterationTransaction transaction,
-                                    StateStore store, int robotId, DriveProfile profile, DecisionObserver observer) {
+    private static EngineSide build(EngineTables tables, IterationTransaction transaction, StateStore store,
+                                    int robotId, DriveProfile profile, DecisionObserver observer) {
         ProactiveEngine.Builder builder = ProactiveEngine.builder()
                 .robotId(robotId)
                 .algorithm(Algorithm.LAZY)
@@ -125,7 +122,7 @@ public final class EngineSide {
         if (observer != null) {
             builder.service(DecisionObserver.class, observer);
         }
-        return new EngineSide(builder.build(), tables, jdbc, transaction);
+        return new EngineSide(builder.build(), tables, transaction);
     }
 
     /** Starts from StartUp, discarding any saved state of this robot's engine. */
@@ -195,11 +192,6 @@ public final class EngineSide {
     /** @return the engine */
     public ProactiveEngine engine() {
         return engine;
-    }
-
-    /** @return the robot's tables as the engine sees them, over the database; null when built over another layer */
-    public JdbcRobotTables tables() {
-        return tables;
     }
 
     /** @return what the engine's rules read and write, whatever the layer */
