@@ -2,8 +2,10 @@ package org.proactiverobotics.robot;
 
 import com.zaxxer.hikari.HikariDataSource;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Objects;
 import java.util.Optional;
 import java.util.Set;
 import java.util.function.Consumer;
@@ -99,7 +101,7 @@ public class ProactiveController extends RobotSuperclass {
      * @return this controller
      */
     public ProactiveController onCommand(Consumer<CommandRecord> listener) {
-        this.commandListener = java.util.Objects.requireNonNull(listener, "listener");
+        this.commandListener = Objects.requireNonNull(listener, "listener");
         return this;
     }
 
@@ -169,7 +171,7 @@ public class ProactiveController extends RobotSuperclass {
         }
         SensorAnswer answer = new SensorAnswer(now, gps ? readGps() : null, iu ? readIu() : null,
                 ds ? readDistances() : List.of(), battery ? readBattery() : null,
-                answered == ids.length ? ids : java.util.Arrays.copyOf(ids, answered));
+                answered == ids.length ? ids : Arrays.copyOf(ids, answered));
         int readings = answer.readingCount();
         Boolean ok = call("writing " + readings + " reading(s)", readings, l -> {
             l.answer(robotId, answer);

@@ -5,6 +5,7 @@ import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
@@ -64,8 +65,8 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
                 int n = 0;
                 while (rs.next()) {
                     if (n == angles.length) {
-                        angles = java.util.Arrays.copyOf(angles, n * 2);
-                        distances = java.util.Arrays.copyOf(distances, n * 2);
+                        angles = Arrays.copyOf(angles, n * 2);
+                        distances = Arrays.copyOf(distances, n * 2);
                     }
                     time = rs.getLong(1);
                     angles[n] = rs.getDouble(2);
@@ -76,8 +77,8 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
                 if (n == 0) {
                     return Optional.empty();
                 }
-                return Optional.of(new DistanceScan(time, java.util.Arrays.copyOf(angles, n),
-                        java.util.Arrays.copyOf(distances, n), range));
+                return Optional.of(new DistanceScan(time, Arrays.copyOf(angles, n),
+                        Arrays.copyOf(distances, n), range));
             }
         } catch (SQLException e) {
             throw new TablesException("reading the newest distance-sensor reading of robot " + robotId, e);
