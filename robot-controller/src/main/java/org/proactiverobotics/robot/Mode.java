@@ -39,11 +39,6 @@ public enum Mode {
         return arguments >= 0;
     }
 
-    /** @return whether both wheels stand still in this mode */
-    public boolean isStationary() {
-        return this == WAITING || this == STOP || this == RECHARGE;
-    }
-
     /**
      * The command mode of this exact name (upper case).
      *

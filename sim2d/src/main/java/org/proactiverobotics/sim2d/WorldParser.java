@@ -38,7 +38,7 @@ final class WorldParser {
     private static final Set<String> BATTERY_KEYS = Set.of("initial", "drainPerMeter", "rechargeTo", "rechargeRatePerS");
 
     /** What a number must satisfy beyond being finite. */
-    private enum Bound { ANY, POSITIVE, NON_NEGATIVE, PERCENT, POSITIVE_PERCENT }
+    private enum Bound { ANY, POSITIVE, NON_NEGATIVE, POSITIVE_PERCENT }
 
     private final List<String> problems = new ArrayList<>();
 
@@ -390,7 +390,6 @@ final class WorldParser {
             case ANY -> null;
             case POSITIVE -> d > 0 ? null : "must be > 0";
             case NON_NEGATIVE -> d >= 0 ? null : "must be >= 0";
-            case PERCENT -> d >= 0 && d <= 100 ? null : "must be from 0 to 100";
             case POSITIVE_PERCENT -> d > 0 && d <= 100 ? null : "must be > 0 and <= 100";
         };
         if (rule != null) {
