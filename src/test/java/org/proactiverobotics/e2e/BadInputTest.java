@@ -2,8 +2,6 @@ package org.proactiverobotics.e2e;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -15,8 +13,6 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.proactiverobotics.app.Main;
-import picocli.CommandLine;
 
 /**
  * Bad input on the command line (issue 7): malformed worlds of several kinds and bad options of
@@ -25,7 +21,7 @@ import picocli.CommandLine;
  * 3) and without writing anything (no output directory). RunCommandTest, ValidateCommandTest and
  * DeployCommandsTest hold the first cases of each; these are the rest.
  */
-class BadInputTest {
+class BadInputTest extends CommandLineTest {
 
     /** A database that is not there: a command that got as far as waiting for it would exit 3, not 2. */
     private static final String NO_DB = "jdbc:mysql://127.0.0.1:1/none";
@@ -34,16 +30,6 @@ class BadInputTest {
 
     @TempDir
     Path tmp;
-
-    private final StringWriter out = new StringWriter();
-    private final StringWriter err = new StringWriter();
-
-    private int run(String... args) {
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        return cl.execute(args);
-    }
 
     static Stream<Arguments> malformedWorlds() {
         return Stream.of(

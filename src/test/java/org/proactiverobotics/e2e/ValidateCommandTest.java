@@ -2,8 +2,6 @@ package org.proactiverobotics.e2e;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -11,22 +9,9 @@ import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.proactiverobotics.app.Main;
-
-import picocli.CommandLine;
 
 /** {@code validate --world FILE} through the real command line (DESIGN section 7). */
-class ValidateCommandTest {
-
-    private final StringWriter out = new StringWriter();
-    private final StringWriter err = new StringWriter();
-
-    private int run(String... args) {
-        CommandLine cl = Main.commandLine();
-        cl.setOut(new PrintWriter(out, true));
-        cl.setErr(new PrintWriter(err, true));
-        return cl.execute(args);
-    }
+class ValidateCommandTest extends CommandLineTest {
 
     /** The project's worlds/ directory, found from wherever the tests run. */
     private static Path worldsDir() {
