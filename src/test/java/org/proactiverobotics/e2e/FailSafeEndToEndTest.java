@@ -11,7 +11,7 @@ import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
 import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.Strategy;
 
 /** The fail-safe scenario end to end: a scenario's rule throws in the middle of a mission. */
 class FailSafeEndToEndTest {
@@ -23,7 +23,7 @@ class FailSafeEndToEndTest {
         AtomicBoolean failing = new AtomicBoolean();
         FaultInjection fault = new FaultInjection(ObstacleAvoidanceScenario.class, failing::get);
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
-            Missions.Run run = Missions.run("reference-arena", db, Strategies.SAFETY_FIRST,
+            Missions.Run run = Missions.run("reference-arena", db, Strategy.SAFETY_FIRST,
                     sim -> failing.set(sim.simTimeS() >= failFromS && sim.simTimeS() < failUntilS), fault);
             MissionReport report = run.report();
 

@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.BooleanSupplier;
 import java.util.function.UnaryOperator;
-import org.proactiverobotics.app.link.EngineTables;
+import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.SensorReadings;

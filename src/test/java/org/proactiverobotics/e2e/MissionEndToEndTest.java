@@ -17,7 +17,9 @@ import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
@@ -67,7 +69,7 @@ class MissionEndToEndTest {
                 low.battery().rechargeTo(), low.battery().rechargeRatePerS()));
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             MissionReport report = new Mission(new MissionOptions(enough, db.jdbcUrl(), db.user(), db.password(),
-                    Strategies.SAFETY_FIRST, 1)).run(Files.createTempDirectory("enough-battery-"));
+                    Strategy.SAFETY_FIRST, 1)).run(Files.createTempDirectory("enough-battery-"));
             assertThat(report.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
             assertThat(report.recharges()).isZero();
             assertThat(report.minBattery()).isBetween(0.0, 60.0 - 30.0);
@@ -90,13 +92,13 @@ class MissionEndToEndTest {
             JdbcRobotTables strategyFromOutside = new JdbcRobotTables(db.dataSource(), 1);
             AtomicBoolean switched = new AtomicBoolean();
             AtomicBoolean switchedBack = new AtomicBoolean();
-            Missions.Run run = Missions.run("reference-arena", db, Strategies.SAFETY_FIRST, sim -> {
+            Missions.Run run = Missions.run("reference-arena", db, Strategy.SAFETY_FIRST, sim -> {
                 if (!switched.get() && sim.simTimeS() >= switchAtS) {
                     switched.set(true);
-                    strategyFromOutside.write(Strategies.named(Strategies.DESTINATION_FIRST));
+                    strategyFromOutside.write(Strategy.named(Strategy.DESTINATION_FIRST).rows(RobotEngine.freshSlots(ScenarioPlugins.none())));
                 } else if (!switchedBack.get() && sim.simTimeS() >= switchBackAtS) {
                     switchedBack.set(true);
-                    strategyFromOutside.write(Strategies.named(Strategies.SAFETY_FIRST));
+                    strategyFromOutside.write(Strategy.named(Strategy.SAFETY_FIRST).rows(RobotEngine.freshSlots(ScenarioPlugins.none())));
                 }
             });
             List<JsonObject> trace = run.trace();
@@ -126,7 +128,7 @@ class MissionEndToEndTest {
     @Test
     void theSameWorldAndSeedGiveTheSameRunBitForBit() throws Exception {
         Missions.Run first = Missions.onH2("reference-arena");
-        Missions.Run second = Missions.run("reference-arena", DatabaseKind.H2, Strategies.SAFETY_FIRST, sim -> { });
+        Missions.Run second = Missions.run("reference-arena", DatabaseKind.H2, Strategy.SAFETY_FIRST, sim -> { });
         assertThat(second.deterministicPart()).isEqualTo(first.deterministicPart());
         assertThat(Files.readString(second.outDir().resolve("trace.jsonl")))
                 .isEqualTo(Files.readString(first.outDir().resolve("trace.jsonl")));
@@ -137,7 +139,7 @@ class MissionEndToEndTest {
     @Test
     void aRunOnMariaDbGivesTheSameReportAsOnH2() throws Exception {
         AtomicLong steps = new AtomicLong();
-        Missions.Run onMariaDb = Missions.run("reference-arena", DatabaseKind.MARIADB, Strategies.SAFETY_FIRST,
+        Missions.Run onMariaDb = Missions.run("reference-arena", DatabaseKind.MARIADB, Strategy.SAFETY_FIRST,
                 sim -> steps.incrementAndGet());
         assertThat(onMariaDb.report().database()).isEqualTo("mariadb");
         assertThat(onMariaDb.deterministicPart()).isEqualTo(Missions.onH2("reference-arena").deterministicPart());

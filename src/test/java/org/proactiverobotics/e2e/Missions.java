@@ -10,7 +10,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
-import org.proactiverobotics.app.link.EngineTables;
+import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
@@ -72,8 +72,8 @@ final class Missions {
 
     /** The run of a bundled world over the in-process direct link: no database. */
     static Run direct(String world, String strategy) {
-        MissionOptions options = new MissionOptions(WorldFiles.bundled(world), null, null, null, strategy, 1,
-                MissionOptions.Link.DIRECT);
+        MissionOptions options = new MissionOptions(WorldFiles.bundled(world), null, null, null, strategy, 1)
+                .withLink(MissionOptions.Link.DIRECT);
         return run(options, sim -> { }, UnaryOperator.identity());
     }
 

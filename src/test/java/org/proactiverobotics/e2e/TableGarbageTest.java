@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
-import org.proactiverobotics.app.link.EngineTables;
+import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.db.DatabaseKind;

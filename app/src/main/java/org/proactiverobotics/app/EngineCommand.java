@@ -10,11 +10,10 @@ import org.proactiverobotics.app.deploy.EngineClock;
 import org.proactiverobotics.app.deploy.EngineLoop;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
-import org.proactiverobotics.app.mission.EngineSide;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.engine.CorruptStateException;
 import org.proactiverobotics.engine.motion.DriveProfile;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.RobotEngine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -41,11 +40,9 @@ public final class EngineCommand implements Callable<Integer> {
     @Mixin
     private ProcessOptions process;
 
-    @Option(names = "--strategy", paramLabel = "NAME", defaultValue = Strategies.SAFETY_FIRST,
-            completionCandidates = RunCommand.StrategyNames.class,
-            description = "The strategy written when the robot has none yet (${COMPLETION-CANDIDATES}); a strategy "
-                    + "changed with the `strategy` command survives restarts. Default: ${DEFAULT-VALUE}.")
-    private String strategy;
+    /** --scenarios, --strategy and --strategy-file; the strategy is written when the robot has none yet. */
+    @Mixin
+    private ScenarioOptions scenarios;
 
     @Option(names = "--fresh", description = "Discard the saved state and start the scenarios afresh (default: resume).")
     private boolean fresh;
@@ -71,23 +68,35 @@ public final class EngineCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         String problem = problem();
+        ScenarioOptions.Choice choice = null;
+        if (problem == null) {
+            try {
+                choice = scenarios.load();
+            } catch (IllegalArgumentException e) { // a plug-in or strategy that cannot be used
+                problem = e.getMessage();
+            }
+        }
         if (problem != null) {
             err.println(problem);
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
+        if (choice.unlistedWarning() != null) {
+            err.println(choice.unlistedWarning());
+            err.flush();
+        }
         ServiceLogging.statusLines();
         ShutdownSignal signal = ShutdownSignal.install();
         int code = Main.EXIT_INFRASTRUCTURE; // what an unexpected exception ends with
         try {
-            code = serve(signal, err);
+            code = serve(signal, err, choice);
         } finally {
             signal.finished(code);
         }
         return code;
     }
 
-    private int serve(ShutdownSignal signal, PrintWriter err) {
+    private int serve(ShutdownSignal signal, PrintWriter err, ScenarioOptions.Choice choice) {
         try {
             if (!DatabaseWait.await(db, "engine_clock", signal::stopRequested)) {
                 return 0;
@@ -98,9 +107,11 @@ public final class EngineCommand implements Callable<Integer> {
             return Main.EXIT_INFRASTRUCTURE;
         }
         try (HikariDataSource pool = Databases.pool(db.url(), db.user(), db.password())) {
-            EngineSide side = EngineSide.build(pool, process.robotId(), new DriveProfile(maxSpeedMps, axleWidthM), null);
+            RobotEngine side = RobotEngine.builder().robotId(process.robotId()).database(pool)
+                    .drive(new DriveProfile(maxSpeedMps, axleWidthM)).plugins(choice.plugins()).build();
             EngineLoop loop = new EngineLoop(side, new EngineClock(pool, process.robotId()), process.robotId(),
-                    new EngineLoop.Options(strategy, fresh, periodMs, process.logEvery()), signal::stopRequested, process.heartbeat());
+                    new EngineLoop.Options(choice.strategy(), fresh, periodMs, process.logEvery()), signal::stopRequested,
+                    process.heartbeat());
             loop.run();
             return 0;
         } catch (CorruptStateException e) {
@@ -115,9 +126,6 @@ public final class EngineCommand implements Callable<Integer> {
         String dbProblem = db.problem();
         if (dbProblem != null) {
             return dbProblem;
-        }
-        if (!Strategies.names().contains(strategy)) {
-            return "unknown strategy '" + strategy + "'; known: " + String.join(", ", Strategies.names());
         }
         if (!(maxSpeedMps > 0) || Double.isInfinite(maxSpeedMps)) {
             return "--max-speed-mps must be a positive number: " + maxSpeedMps;

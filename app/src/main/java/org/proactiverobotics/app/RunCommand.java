@@ -20,13 +20,14 @@ import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.Progress;
 import org.proactiverobotics.db.Databases;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.sim2d.GroundTruth;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
 import org.proactiverobotics.sim2d.WorldValidationException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
@@ -64,10 +65,8 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--db-password", paramLabel = "P", description = "Database password.")
     private String dbPassword;
 
-    @Option(names = "--strategy", paramLabel = "NAME", defaultValue = Strategies.SAFETY_FIRST,
-            description = "The strategy (PriorityArray) to start with: ${COMPLETION-CANDIDATES}. Default: ${DEFAULT-VALUE}.",
-            completionCandidates = StrategyNames.class)
-    private String strategy;
+    @Mixin
+    private ScenarioOptions scenarios;
 
     @Option(names = "--link", paramLabel = "LAYER", defaultValue = "jdbc",
             description = "How the engine and the robot talk: jdbc (the shared database) or direct (in-process memory, "
@@ -103,8 +102,11 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
-        if (!Strategies.names().contains(strategy)) {
-            err.println("unknown strategy '" + strategy + "'; known: " + String.join(", ", Strategies.names()));
+        ScenarioOptions.Choice choice;
+        try {
+            choice = scenarios.load();
+        } catch (IllegalArgumentException e) { // a plug-in or strategy that cannot be used
+            err.println(e.getMessage());
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
@@ -129,7 +131,7 @@ public final class RunCommand implements Callable<Integer> {
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         String url = db != null ? db : Databases.embeddedH2Url("proactive_run_" + System.nanoTime());
         MissionOptions options = new MissionOptions(spec, url, db != null ? dbUser : "sa", db != null ? dbPassword : "",
-                strategy, robotId).withLink(layer);
+                Strategy.SAFETY_FIRST, robotId).withLink(layer).withScenarios(choice.plugins(), choice.strategy());
         try {
             Files.createDirectories(outDir);
         } catch (IOException e) {
@@ -138,8 +140,14 @@ public final class RunCommand implements Callable<Integer> {
             return Main.EXIT_BAD_INPUT;
         }
         boolean live = !quiet && System.console() != null;
-        stdout.printf(Locale.ROOT, "Mission %s on %s, strategy %s%n", spec.name(),
-                layer == MissionOptions.Link.DIRECT ? "the direct in-process link" : db != null ? db : "embedded H2", strategy);
+        if (choice.unlistedWarning() != null) {
+            err.println(choice.unlistedWarning());
+            err.flush();
+        }
+        stdout.printf(Locale.ROOT, "Mission %s on %s, strategy %s%s%n", spec.name(),
+                layer == MissionOptions.Link.DIRECT ? "the direct in-process link" : db != null ? db : "embedded H2",
+                choice.strategy().name(), choice.plugins().scenarios().isEmpty() ? ""
+                        : ", plug-in scenarios " + String.join(", ", choice.plugins().scenarios().keySet()));
         stdout.flush();
         MissionReport report;
         try {
@@ -194,7 +202,7 @@ public final class RunCommand implements Callable<Integer> {
     static final class StrategyNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
-            return Strategies.names().iterator();
+            return Strategy.names().iterator();
         }
     }
 

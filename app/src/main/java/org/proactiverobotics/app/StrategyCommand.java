@@ -2,14 +2,20 @@ package org.proactiverobotics.app;
 
 import com.zaxxer.hikari.HikariDataSource;
 import java.io.PrintWriter;
+import java.nio.file.Path;
 import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.db.Databases;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.proactiverobotics.engine.robot.Strategy;
+import org.proactiverobotics.engine.robot.StrategyException;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.StrategyTable;
 import picocli.CommandLine.Command;
@@ -26,8 +32,10 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "strategy",
         mixinStandardHelpOptions = true,
-        description = {"Shows the strategy (PriorityArray) of a robot's mission; --set NAME changes it while the engine runs.",
-                "Run it as the engine's database user. Exit codes: 0 done, 2 bad input (unknown strategy), 3 database not usable."})
+        description = {"Shows the strategy (PriorityArray) of a robot's mission; --set NAME or --set-file FILE changes it while"
+                + " the engine runs.",
+                "Run it as the engine's database user. Exit codes: 0 done, 2 bad input (unknown strategy, bad strategy file,"
+                + " a scenario the engine has not loaded), 3 database not usable."})
 public final class StrategyCommand implements Callable<Integer> {
 
     @Mixin
@@ -40,6 +48,11 @@ public final class StrategyCommand implements Callable<Integer> {
             description = "Change the strategy to this one: ${COMPLETION-CANDIDATES}.")
     private String set;
 
+    @Option(names = "--set-file", paramLabel = "FILE",
+            description = "Change the strategy to this strategy file's: {\"name\": ..., \"priorities\": {\"<scenario>\": <int>},"
+                    + " \"timeoutsMs\": {...}}. It may name only scenarios the robot's engine has loaded.")
+    private Path setFile;
+
     @Spec
     private CommandSpec spec;
 
@@ -48,8 +61,16 @@ public final class StrategyCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         String problem = db.problem();
-        if (problem == null && set != null && !Strategies.names().contains(set)) {
-            problem = "unknown strategy '" + set + "'; known: " + String.join(", ", Strategies.names());
+        Strategy wanted = null;
+        if (problem == null && set != null && setFile != null) {
+            problem = "give --set or --set-file, not both";
+        }
+        if (problem == null && (set != null || setFile != null)) {
+            try {
+                wanted = setFile != null ? Strategy.read(setFile) : Strategy.named(set);
+            } catch (StrategyException e) {
+                problem = e.getMessage();
+            }
         }
         if (problem != null) {
             err.println(problem);
@@ -65,11 +86,28 @@ public final class StrategyCommand implements Callable<Integer> {
         }
         try (HikariDataSource pool = Databases.pool(db.url(), db.user(), db.password())) {
             JdbcRobotTables tables = new JdbcRobotTables(pool, robotId);
-            if (set != null) {
+            if (wanted != null) {
                 List<StrategyTable.Entry> before = tables.read();
-                tables.write(Strategies.named(set));
+                Map<String, Integer> slots = slots(before);
+                List<StrategyTable.Entry> rows;
+                try {
+                    rows = wanted.rows(slots);
+                } catch (StrategyException e) {
+                    err.println((setFile != null ? "strategy file " + setFile + ": " : "") + e.getMessage()
+                            + (before.isEmpty() ? " (the robot's engine has not written its strategy yet: these are the"
+                            + " built-in scenarios)" : ""));
+                    err.flush();
+                    return Main.EXIT_BAD_INPUT;
+                }
+                tables.write(rows);
+                List<String> unlisted = wanted.unlisted(slots);
+                if (!unlisted.isEmpty()) {
+                    err.println("strategy " + wanted.name() + " leaves out " + String.join(", ", unlisted)
+                            + ": ranked below every scenario it lists");
+                    err.flush();
+                }
                 out.printf(Locale.ROOT, "robot %d: strategy %s -> %s (the engine obeys it from its next iteration)%n",
-                        robotId, name(before), set);
+                        robotId, name(before), wanted.name());
             }
             print(out, tables.read());
             out.flush();
@@ -79,6 +117,16 @@ public final class StrategyCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }
+    }
+
+    /** The slots the engine gave, as its strategy rows show them; before it wrote any, the built-in ones. */
+    private static Map<String, Integer> slots(List<StrategyTable.Entry> rows) {
+        if (rows.isEmpty()) {
+            return RobotEngine.freshSlots(ScenarioPlugins.none());
+        }
+        Map<String, Integer> slots = new LinkedHashMap<>();
+        rows.forEach(e -> slots.put(e.scenario(), e.slot()));
+        return slots;
     }
 
     private void print(PrintWriter out, List<StrategyTable.Entry> entries) {

@@ -55,6 +55,13 @@ public final class CommandArray {
         Arrays.fill(slots, null);
     }
 
+    /** Grows to at least n slots (more scenarios than a saved state knew); never shrinks. */
+    void ensureSize(int n) {
+        if (n > slots.length) {
+            slots = Arrays.copyOf(slots, n);
+        }
+    }
+
     private int checked(int slot) {
         if (slot < 0 || slot >= slots.length) {
             throw new IndexOutOfBoundsException("CommandArray slot " + slot + " is outside 0.." + (slots.length - 1));

@@ -18,7 +18,7 @@ final class FailureLog {
 
     private final Map<String, Long> seen = new HashMap<>();
 
-    void failed(RuleFailure failure, Exception cause) {
+    void failed(RuleFailure failure, Throwable cause) {
         String key = failure.scenario() + '/' + failure.rule() + '/' + failure.part() + '/' + cause.getClass().getName();
         long count = seen.merge(key, 1L, Long::sum);
         if (count == 1) {

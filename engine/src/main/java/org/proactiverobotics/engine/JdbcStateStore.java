@@ -247,6 +247,12 @@ public final class JdbcStateStore implements StateStore {
         return s == null ? "" : s.length() <= max ? s : s.substring(0, max);
     }
 
+    /** Round-trips the rule through its JSON, as a save and a resume would. */
+    @Override
+    public void checkSaveable(Rule rule) {
+        codec.rule(codec.ruleType(rule), codec.ruleJson(rule));
+    }
+
     @Override
     public void clear(int robotId) {
         savedRows.remove(robotId);

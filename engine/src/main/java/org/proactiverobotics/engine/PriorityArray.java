@@ -60,6 +60,14 @@ public final class PriorityArray {
         return sorted;
     }
 
+    /** Grows to at least n slots (more scenarios than a saved state knew); never shrinks. */
+    void ensureSize(int n) {
+        if (n > priorities.length) {
+            priorities = Arrays.copyOf(priorities, n);
+            order = null;
+        }
+    }
+
     private int checked(int slot) {
         if (slot < 0 || slot >= priorities.length) {
             throw new IndexOutOfBoundsException("PriorityArray slot " + slot + " is outside 0.." + (priorities.length - 1));

@@ -3,6 +3,7 @@ package org.proactiverobotics.engine;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -50,6 +51,7 @@ public final class ProactiveEngine {
     private final int memorySlots;
     private final IterationListener[] listeners;
     private final RuleContext context;
+    private final Map<String, Integer> preferredSlots;
 
     private ArrayDeque<Rule> currentQueue = new ArrayDeque<>();
     private ArrayDeque<Rule> nextQueue = new ArrayDeque<>();
@@ -66,6 +68,8 @@ public final class ProactiveEngine {
     private final FailureLog failureLog = new FailureLog();
     private final List<RuleFailure> failuresView = Collections.unmodifiableList(failures);
 
+    private Rule running;                 // the rule whose part runs, for RuleContext.suggest
+    private final Map<Class<?>, Boolean> saveable = new HashMap<>();
     private int generatedCount;
     private int partsRun;                 // bit set of Part ordinals of the rule running
     private ArrayList<Rule> traceGenerated; // non-null only while a listener traces a rule
@@ -77,6 +81,7 @@ public final class ProactiveEngine {
         this.memorySlots = b.memorySlots;
         this.listeners = b.listeners.toArray(IterationListener[]::new);
         this.context = new RuleContext(this, Map.copyOf(b.services));
+        this.preferredSlots = new LinkedHashMap<>(b.slots);
         this.memory = new SharedMemory(memorySlots);
     }
 
@@ -126,6 +131,7 @@ public final class ProactiveEngine {
         }
         this.iteration = iteration;
         this.memory = memory;
+        memory.assignSlots(preferredSlots);
         this.currentQueue.clear();
         this.nextQueue.clear();
         this.nextQueue.addAll(rules);
@@ -220,6 +226,7 @@ public final class ProactiveEngine {
         int queueMark = nextQueue.size();
         int generatedMark = generatedCount;
         RuleContext ctx = context;
+        running = rule;
         Part part = Part.GUARD_DATA_ACQUISITION;
         partsRun = 1 << Part.GUARD_DATA_ACQUISITION.ordinal();
         try {
@@ -249,8 +256,8 @@ public final class ProactiveEngine {
             part = mark(Part.RULES_GENERATION);
             rule.rulesGeneration(ctx, outcome);
             return outcome;
-        } catch (Exception e) {
-            // The failed rule generates nothing: drop what its rules generation appended.
+        } catch (Exception | LinkageError | StackOverflowError | AssertionError e) {
+            // A rule's fault, whatever it throws short of the JVM failing: the failed rule generates nothing.
             while (nextQueue.size() > queueMark) {
                 nextQueue.pollLast();
             }
@@ -259,6 +266,8 @@ public final class ProactiveEngine {
             failures.add(failure);
             failureLog.failed(failure, e);
             return Outcome.FAILED;
+        } finally {
+            running = null;
         }
     }
 
@@ -311,11 +320,53 @@ public final class ProactiveEngine {
     }
 
     void generate(Rule rule) {
+        if (store != NoStateStore.INSTANCE) {
+            checkSaveable(rule);
+        }
         nextQueue.addLast(rule);
         generatedCount++;
         if (traceGenerated != null) {
             traceGenerated.add(rule);
         }
+    }
+
+    /** A rule the store cannot save fails the rule that generates it, not the iteration's save; checked once per class. */
+    private void checkSaveable(Rule rule) {
+        Boolean ok = saveable.get(rule.getClass());
+        if (ok == null) {
+            try {
+                store.checkSaveable(rule);
+                ok = Boolean.TRUE;
+            } catch (RuntimeException e) {
+                ok = Boolean.FALSE;
+                LOG.warn("rule type {} cannot be saved with the engine state: {}", rule.getClass().getName(), e.getMessage());
+            }
+            saveable.put(rule.getClass(), ok);
+        }
+        if (!ok) {
+            throw new IllegalArgumentException("rule " + rule + " (" + rule.getClass().getName()
+                    + ") cannot be saved with the engine state: make it a top-level or static nested class whose"
+                    + " non-transient fields Gson can write (numbers, strings, arrays, lists, maps, records of them)");
+        }
+    }
+
+    /** The CommandArray slot of the running rule's scenario; for {@link RuleContext#suggest}. */
+    int slotOfRunningRule() {
+        Rule rule = running;
+        if (rule == null) {
+            throw new IllegalStateException("suggest is for a rule's parts, while the rule runs");
+        }
+        int slot = memory.slotOf(rule.scenario());
+        if (slot < 0) {
+            throw new IllegalStateException("scenario '" + rule.scenario() + "' of rule " + rule.name()
+                    + " has no CommandArray slot (slots: " + memory.slots() + ")");
+        }
+        return slot;
+    }
+
+    /** @return the rule whose part is running, or null between rules */
+    Rule runningRule() {
+        return running;
     }
 
     // ---------------------------------------------------------------- read
@@ -397,8 +448,31 @@ public final class ProactiveEngine {
         private int memorySlots = SharedMemory.DEFAULT_SLOTS;
         private final List<IterationListener> listeners = new ArrayList<>();
         private final Map<Class<?>, Object> services = new LinkedHashMap<>();
+        private final Map<String, Integer> slots = new LinkedHashMap<>();
 
         private Builder() {
+        }
+
+        /**
+         * Gives a scenario a CommandArray slot at start, for {@link RuleContext#suggest}: the lowest
+         * free one, in the order scenarios are given. A saved state's slots are kept on a resume.
+         *
+         * @param scenario the scenario's name
+         */
+        public Builder slot(String scenario) {
+            return slot(scenario, -1);
+        }
+
+        /**
+         * As {@link #slot(String)}, with the slot it gets when that one is free: how the built-in
+         * scenarios keep the slots they always had.
+         *
+         * @param scenario      the scenario's name
+         * @param preferredSlot its slot when free, or -1 for the lowest free one
+         */
+        public Builder slot(String scenario, int preferredSlot) {
+            slots.putIfAbsent(Objects.requireNonNull(scenario, "scenario"), preferredSlot);
+            return this;
         }
 
         /** @param robotId the engine instance id, the {@code robot_id} its state is saved under */

@@ -15,6 +15,9 @@ import java.util.Optional;
  */
 public final class RuleContext {
 
+    /** The longest command {@link #suggest} takes: what engine_comments holds. */
+    public static final int MAX_COMMAND_LENGTH = 255;
+
     private final ProactiveEngine engine;
     private final Map<Class<?>, Object> services;
 
@@ -42,6 +45,27 @@ public final class RuleContext {
      */
     public void generate(Rule rule) {
         engine.generate(Objects.requireNonNull(rule, "generated rule"));
+    }
+
+    /**
+     * Suggests a command to the robot: enters it in the CommandArray slot of the running rule's
+     * scenario, where the decision scenario weighs it against the others by the strategy. The
+     * engine gave the scenario its slot at start; a scenario never picks one. Only the newest
+     * suggestion of an iteration counts.
+     *
+     * @param command a command in the robot's grammar: {@code STOP}, {@code DRIVE l r} (wheel
+     *                speeds, m/s), {@code FORWARD v}, {@code TURN_LEFT v}, {@code TURN_RIGHT v}
+     *                (m/s), {@code RECHARGE}; at most {@value #MAX_COMMAND_LENGTH} characters
+     * @throws IllegalArgumentException when the command is empty or too long
+     * @throws IllegalStateException    when the rule's scenario has no slot (it was not given one)
+     */
+    public void suggest(String command) {
+        if (command == null || command.isBlank() || command.length() > MAX_COMMAND_LENGTH) {
+            throw new IllegalArgumentException("not a command: " + (command == null ? "null"
+                    : "'" + command.substring(0, Math.min(command.length(), 40)) + "' (" + command.length() + " characters)"));
+        }
+        int slot = engine.slotOfRunningRule();
+        engine.memory().commandArray().enter(slot, command, engine.runningRule().scenario(), engine.iteration());
     }
 
     /** @return the memory scenarios share (CommandArray, PriorityArray, named values) */

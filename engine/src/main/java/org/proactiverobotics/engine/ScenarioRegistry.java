@@ -1,6 +1,5 @@
 package org.proactiverobotics.engine;
 
-import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
@@ -44,6 +43,15 @@ public final class ScenarioRegistry {
         return new ScenarioRegistry(List.of(scenarios));
     }
 
+    /**
+     * @param scenarios the scenarios, e.g. the built-in ones and those of plug-ins
+     * @return a registry of exactly these scenarios
+     * @throws IllegalStateException naming both classes when two share a name
+     */
+    public static ScenarioRegistry of(Iterable<? extends Scenario> scenarios) {
+        return new ScenarioRegistry(scenarios);
+    }
+
     /** @return the known scenario names, sorted */
     public Set<String> names() {
         return byName.keySet();
@@ -72,17 +80,17 @@ public final class ScenarioRegistry {
         return new StartUp(names);
     }
 
-    /** @return one new meta-rule per name, in order */
-    List<MetaRule> metaRules(List<String> names) {
-        List<MetaRule> rules = new ArrayList<>(names.size());
-        for (String name : names) {
-            MetaRule meta = get(name).metaRule();
-            if (meta == null || !name.equals(meta.scenario())) {
-                throw new IllegalStateException("scenario '" + name + "' gave a meta-rule of scenario '"
-                        + (meta == null ? null : meta.scenario()) + "'");
-            }
-            rules.add(meta);
+    /**
+     * @param name a scenario name
+     * @return a new meta-rule of that scenario
+     * @throws IllegalStateException when the scenario gives no meta-rule, or one of another scenario
+     */
+    MetaRule metaRule(String name) {
+        MetaRule meta = get(name).metaRule();
+        if (meta == null || !name.equals(meta.scenario())) {
+            throw new IllegalStateException("scenario '" + name + "' gave a meta-rule of scenario '"
+                    + (meta == null ? null : meta.scenario()) + "'");
         }
-        return rules;
+        return meta;
     }
 }

@@ -1,5 +1,6 @@
 package org.proactiverobotics.engine;
 
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
@@ -16,6 +17,8 @@ public final class SharedMemory {
     private final CommandArray commandArray;
     private final PriorityArray priorityArray;
     private final Map<String, String> values = new LinkedHashMap<>();
+    /** Each suggesting scenario's CommandArray slot, given by the engine at start; absent in states saved before slots were given. */
+    private Map<String, Integer> slots = new LinkedHashMap<>();
 
     /** For Gson, which then sets the fields from the saved JSON. */
     private SharedMemory() {
@@ -46,8 +49,52 @@ public final class SharedMemory {
         return values;
     }
 
+    /** @return each suggesting scenario's CommandArray slot, by scenario name, in the order given (read only) */
+    public Map<String, Integer> slots() {
+        return Collections.unmodifiableMap(slots);
+    }
+
+    /**
+     * @param scenario a scenario's name
+     * @return its CommandArray slot, or -1 when it has none (it does not suggest)
+     */
+    public int slotOf(String scenario) {
+        Integer slot = slots.get(scenario);
+        return slot == null ? -1 : slot;
+    }
+
+    /**
+     * Gives scenarios their slots, keeping every slot already given (saved states stay readable):
+     * a scenario without one gets its preferred slot when that is free, else the lowest free
+     * slot. The arrays grow to hold every slot.
+     *
+     * @param preferred scenario names with their preferred slot (-1: none), in the order to give them
+     */
+    void assignSlots(Map<String, Integer> preferred) {
+        if (slots == null) {
+            slots = new LinkedHashMap<>(); // a state saved with "slots": null
+        }
+        for (Map.Entry<String, Integer> e : preferred.entrySet()) {
+            if (slots.containsKey(e.getKey())) {
+                continue;
+            }
+            int slot = e.getValue();
+            if (slot < 0 || slots.containsValue(slot)) {
+                slot = 0;
+                while (slots.containsValue(slot)) {
+                    slot++;
+                }
+            }
+            slots.put(e.getKey(), slot);
+        }
+        int needed = slots.values().stream().mapToInt(Integer::intValue).max().orElse(-1) + 1;
+        commandArray.ensureSize(needed);
+        priorityArray.ensureSize(needed);
+    }
+
     @Override
     public String toString() {
-        return "SharedMemory{commands=" + commandArray + ", priorities=" + priorityArray + ", values=" + values + "}";
+        return "SharedMemory{commands=" + commandArray + ", priorities=" + priorityArray + ", values=" + values
+                + ", slots=" + slots + "}";
     }
 }

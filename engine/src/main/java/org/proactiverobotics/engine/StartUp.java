@@ -38,7 +38,15 @@ public final class StartUp extends Rule {
     protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
         ScenarioRegistry registry = ctx.findService(ScenarioRegistry.class).orElseGet(ScenarioRegistry::load);
         // Every name is resolved before any rule is generated: an unknown one fails StartUp whole.
-        for (MetaRule meta : registry.metaRules(scenarios)) {
+        scenarios.forEach(registry::get);
+        for (String name : scenarios) {
+            MetaRule meta;
+            try {
+                meta = registry.metaRule(name);
+            } catch (RuntimeException | LinkageError e) {
+                // One scenario's broken metaRule() must not keep the others from starting.
+                meta = new FailedStart(name, "its metaRule() threw " + e);
+            }
             ctx.generate(meta);
         }
     }

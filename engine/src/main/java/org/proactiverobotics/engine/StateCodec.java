@@ -4,6 +4,9 @@ import com.google.gson.Gson;
 import com.google.gson.GsonBuilder;
 import com.google.gson.JsonParseException;
 import java.lang.reflect.Modifier;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
 
 /**
  * Turns rules and the shared memory into JSON and back, with Gson: a rule is its type (class
@@ -98,6 +101,13 @@ public final class StateCodec {
         if (memory.commandArray().size() != memory.priorityArray().size()) {
             throw new IllegalArgumentException("corrupt memory_json: CommandArray has " + memory.commandArray().size()
                     + " slots but PriorityArray " + memory.priorityArray().size());
+        }
+        Set<Integer> given = new HashSet<>();
+        for (Map.Entry<String, Integer> e : memory.slots().entrySet()) {
+            if (e.getKey() == null || e.getValue() == null || e.getValue() < 0 || !given.add(e.getValue())) {
+                throw new IllegalArgumentException("corrupt memory_json: slots " + memory.slots()
+                        + " give a scenario no slot, a negative one or one another scenario has");
+            }
         }
         return memory;
     }

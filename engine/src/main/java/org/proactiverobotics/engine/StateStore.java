@@ -37,6 +37,17 @@ public interface StateStore {
      */
     void clear(int robotId);
 
+    /**
+     * Checks that a rule can be saved (its type loadable back, its fields writable), before the
+     * engine queues it: a rule that could not be saved then fails the rule that generated it,
+     * instead of every save after it. Nothing to check by default.
+     *
+     * @param rule a rule about to be queued
+     * @throws RuntimeException naming the problem when it cannot be saved
+     */
+    default void checkSaveable(Rule rule) {
+    }
+
     /** @return a store that keeps nothing: a pure in-memory engine that always starts fresh */
     static StateStore none() {
         return NoStateStore.INSTANCE;

@@ -15,7 +15,7 @@
  *     }
  *     protected boolean activationGuards(RuleContext ctx) { return levelPct < thresholdPct; }
  *     protected void actions(RuleContext ctx) {
- *         ctx.memory().commandArray().enter(SLOT, "RECHARGE", scenario(), ctx.iteration());
+ *         ctx.suggest("RECHARGE");                         // into the scenario's CommandArray slot
  *     }
  *     protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
  *         ctx.generate(outcome.conditionsHeld() ? new MoveToRecharge() : this);   // clone or hand over

@@ -177,15 +177,22 @@ class PersistenceTest {
             ProactiveEngine engine = engine(db, 9, new Recorder());
             engine.start(Probe.forever("p"), new Workload.Counter("a", 0));
             engine.runIteration();
-            engine.submit(new Rule() { // anonymous: Gson could not load it back, so saving refuses it
+            Rule unsaveable = new Rule() { // anonymous: Gson could not load it back, so saving refuses it
+                @Override
+                public String scenario() {
+                    return "test";
+                }
+            };
+            // Submitted while the iteration runs, it joins nextQueue unchecked (a generated one fails its generator instead).
+            engine.submit(new Rule() {
                 @Override
                 public String scenario() {
                     return "test";
                 }
 
                 @Override
-                protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
-                    ctx.generate(this);
+                protected void actions(RuleContext ctx) {
+                    engine.submit(unsaveable);
                 }
             });
             assertThatThrownBy(engine::runIteration).isInstanceOf(StateStoreException.class)

@@ -9,7 +9,10 @@ import org.junit.jupiter.api.Test;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.proactiverobotics.engine.robot.Strategy;
+import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.robot.link.BatteryReading;
@@ -37,7 +40,7 @@ class DirectLinkTest {
         seen.add(robot.seedMission(1, MISSION));
         seen.add(robot.seedMission(1, MISSION)); // once only
         robot.writeBattery(1, 0, new BatteryReading(100, false));
-        engine.strategy().write(Strategies.named(Strategies.BATTERY_FIRST));
+        engine.strategy().write(Strategy.named(Strategy.BATTERY_FIRST).rows(RobotEngine.freshSlots(ScenarioPlugins.none())));
         seen.add(engine.strategy().read());
         seen.add(engine.readings().newestGps());
         seen.add(engine.readings().newestSimTimeMs(Sensor.GPS));
@@ -99,7 +102,8 @@ class DirectLinkTest {
             overJdbc = script(new JdbcRobotLink(db.dataSource()), EngineTables.of(new JdbcRobotTables(db.dataSource(), 1)));
         }
         DirectLink direct = new DirectLink();
-        List<Object> overDirect = script(direct, EngineTables.of(direct.engine(1)));
+        DirectEngineTables directTables = direct.engine(1);
+        List<Object> overDirect = script(direct, EngineTables.of(directTables, directTables::pruneHistory));
         assertThat(overDirect).hasSameSizeAs(overJdbc);
         for (int i = 0; i < overJdbc.size(); i++) {
             assertThat(overDirect.get(i)).as("observation %d", i).isEqualTo(overJdbc.get(i));

@@ -8,9 +8,9 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 import org.proactiverobotics.app.deploy.EngineClock.RobotTick;
 import org.proactiverobotics.app.deploy.EngineClock.Served;
-import org.proactiverobotics.app.mission.EngineSide;
 import org.proactiverobotics.engine.CorruptStateException;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -38,13 +38,13 @@ public final class EngineLoop {
      * @param periodMs the period of real-time iterations, ms
      * @param logEvery one INFO line every this many iterations
      */
-    public record Options(String strategy, boolean fresh, long periodMs, long logEvery) {
+    public record Options(Strategy strategy, boolean fresh, long periodMs, long logEvery) {
     }
 
     private static final Logger LOG = LoggerFactory.getLogger(EngineLoop.class);
     private static final long STATUS_EVERY_NANOS = TimeUnit.SECONDS.toNanos(30);
 
-    private final EngineSide side;
+    private final RobotEngine side;
     private final EngineClock clock;
     private final int robotId;
     private final Options options;
@@ -70,7 +70,7 @@ public final class EngineLoop {
      * @param stop      true when the process should stop (checked between iterations)
      * @param heartbeat touched while the loop turns
      */
-    public EngineLoop(EngineSide side, EngineClock clock, int robotId, Options options, BooleanSupplier stop,
+    public EngineLoop(RobotEngine side, EngineClock clock, int robotId, Options options, BooleanSupplier stop,
                       Heartbeat heartbeat) {
         this.side = side;
         this.clock = clock;
@@ -87,7 +87,7 @@ public final class EngineLoop {
      */
     public void run() {
         LOG.info("engine {}: running (strategy {} when none is set; real-time period {} ms)", robotId,
-                options.strategy(), options.periodMs());
+                options.strategy().name(), options.periodMs());
         while (!stop.getAsBoolean()) {
             heartbeat.beat();
             try {
@@ -198,9 +198,8 @@ public final class EngineLoop {
 
     /** A strategy changed with the strategy command survives restarts: write ours only when none is set. */
     private void writeStrategyIfNone() {
-        if (side.links().strategy().read().isEmpty()) {
-            side.links().strategy().write(Strategies.named(options.strategy()));
-            LOG.info("engine {}: strategy {} written", robotId, options.strategy());
+        if (side.ensureStrategy(options.strategy())) {
+            LOG.info("engine {}: strategy {} written", robotId, options.strategy().name());
         }
     }
 

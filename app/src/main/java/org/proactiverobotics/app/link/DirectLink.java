@@ -21,7 +21,8 @@ import org.proactiverobotics.robot.link.SensorRequest;
  *
  * <pre>{@code
  * DirectLink link = new DirectLink();
- * EngineSide engine = EngineSide.build(EngineTables.of(link.engine(1)), StateStore.none(), 1, profile, null);
+ * DirectEngineTables tables = link.engine(1);
+ * RobotEngine engine = RobotEngine.builder().tables(EngineTables.of(tables, tables::pruneHistory), StateStore.none()).build();
  * ProactiveController robot = new ProactiveController(sim, link, RobotConfig.defaults(1));
  * }</pre>
  */

@@ -14,7 +14,6 @@ import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
-import org.proactiverobotics.app.link.EngineTables;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.CommandArray;
@@ -22,8 +21,8 @@ import org.proactiverobotics.engine.IterationSummary;
 import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.motion.DriveProfile;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
-import org.proactiverobotics.engine.tables.JdbcRobotTables;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.robot.RobotConfig;
 import org.proactiverobotics.sim2d.GroundTruth;
@@ -50,6 +49,7 @@ public final class Mission {
     private UnaryOperator<EngineTables> engineTables = UnaryOperator.identity();
     private TraceWriter trace;
     private String drivingScenario = "none";
+    private Map<String, Integer> slots = Map.of();
     private long lastDecisionSimTimeMs;
 
     /** @param options what to run */
@@ -99,11 +99,11 @@ public final class Mission {
         try (HikariDataSource enginePool = Databases.pool(options.jdbcUrl(), options.user(), options.password())) {
             Schema.apply(enginePool);
             clearRobotRows(enginePool, robotId);
-            new JdbcRobotTables(enginePool, robotId).write(Strategies.named(options.strategy()));
 
             Simulation sim = new Simulation(world);
-            EngineSide engine = EngineSide.build(enginePool, robotId, profile(world), this::decided, engineTables);
+            RobotEngine engine = engine().database(enginePool).build();
             engine.startFresh();
+            engine.writeStrategy(options.strategy());
 
             try (ProactiveController controller = ProactiveController.connect(sim, options.jdbcUrl(), options.user(),
                     options.password(), RobotConfig.defaults(robotId))) {
@@ -118,18 +118,24 @@ public final class Mission {
         int robotId = options.robotId();
         DirectLink link = new DirectLink();
         DirectEngineTables tables = link.engine(robotId);
-        tables.write(Strategies.named(options.strategy()));
         Simulation sim = new Simulation(world);
-        EngineSide engine = EngineSide.build(engineTables.apply(EngineTables.of(tables)), StateStore.none(), robotId,
-                profile(world), this::decided);
+        RobotEngine engine = engine().tables(EngineTables.of(tables, tables::pruneHistory), StateStore.none()).build();
         engine.startFresh();
+        engine.writeStrategy(options.strategy());
         try (ProactiveController controller = new ProactiveController(sim, link, RobotConfig.defaults(robotId))) {
             return run(sim, engine, controller, outDir);
         }
     }
 
-    private MissionReport run(Simulation sim, EngineSide engine, ProactiveController controller, Path outDir)
+    /** The engine's standard wiring, with this mission's robot, plug-ins, trace and table wrapper. */
+    private RobotEngine.Builder engine() {
+        return RobotEngine.builder().robotId(options.robotId()).drive(profile(options.world()))
+                .plugins(options.plugins()).observer(this::decided).decorate(engineTables);
+    }
+
+    private MissionReport run(Simulation sim, RobotEngine engine, ProactiveController controller, Path outDir)
             throws IOException {
+        this.slots = engine.slots();
         // Counted as the robot gets them, as the robot process counts them: the same commandWins either way.
         controller.onCommand(command -> {
             commandWins.merge(command.scenario(), 1L, Long::sum);
@@ -147,7 +153,7 @@ public final class Mission {
         return new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM());
     }
 
-    private MissionReport loop(Simulation sim, EngineSide engine, ProactiveController controller) {
+    private MissionReport loop(Simulation sim, RobotEngine engine, ProactiveController controller) {
         GroundTruth truth = sim.groundTruth();
         long physicsNs = 0;
         long robotNs = 0;
@@ -188,7 +194,7 @@ public final class Mission {
         double wallS = (System.nanoTime() - start) / 1e9;
         String database = options.link() == MissionOptions.Link.DIRECT ? "direct"
                 : MissionReport.databaseKind(options.jdbcUrl());
-        return MissionReport.of(sim, outcome, options.strategy(), database, wallS, steps, engine.engine().iteration(),
+        return MissionReport.of(sim, outcome, options.strategy().name(), database, wallS, steps, engine.engine().iteration(),
                 commandWins, failures, MissionReport.Timing.rounded(physicsNs / 1e6 / steps, robotNs / 1e6 / steps,
                         engineNs / 1e6 / steps));
     }
@@ -200,13 +206,8 @@ public final class Mission {
 
     private void writePicture(WorldSpec world, Simulation sim, Path file) throws IOException {
         SvgRenderer svg = new SvgRenderer(world).robot(sim).trajectory(path)
-                .colour("ReachDestination", "#1f77b4")
-                .colour("ObstacleAvoidance", "#d62728")
-                .colour("BatteryMonitor", "#2ca02c")
-                .colour("DecisionMaking", "#7f7f7f")
-                .colour("FailSafe", "#ff7f0e")
-                .colour("none", "#7f7f7f")
                 .title(world.name() + " — path coloured by the scenario whose command was driving");
+        ScenarioColours.of(slots).forEach(svg::colour);
         for (SvgRenderer.Marker m : markers) {
             svg.marker(m.x(), m.y(), m.label());
         }

@@ -1,6 +1,8 @@
 package org.proactiverobotics.app.mission;
 
 import java.util.Objects;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -10,12 +12,13 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * @param jdbcUrl  the shared database (unused over the direct link)
  * @param user     its user, or null
  * @param password its password, or null
- * @param strategy the named strategy to start with
+ * @param strategy the strategy to start with
  * @param robotId  the robot's id in the shared tables
  * @param link     how the engine and the robot talk
+ * @param plugins  scenarios from outside, started after the built-in ones that suggest
  */
-public record MissionOptions(WorldSpec world, String jdbcUrl, String user, String password, String strategy, int robotId,
-                             Link link) {
+public record MissionOptions(WorldSpec world, String jdbcUrl, String user, String password, Strategy strategy, int robotId,
+                             Link link, ScenarioPlugins plugins) {
 
     /** The communication layer between the engine and the robot. */
     public enum Link {
@@ -27,16 +30,23 @@ public record MissionOptions(WorldSpec world, String jdbcUrl, String user, Strin
 
     /** Checks the link. */
     public MissionOptions {
+        Objects.requireNonNull(strategy, "strategy");
         Objects.requireNonNull(link, "link");
+        Objects.requireNonNull(plugins, "plugins");
     }
 
-    /** A mission through the shared database. */
+    /** A mission through the shared database, with a bundled strategy and no plug-ins. */
     public MissionOptions(WorldSpec world, String jdbcUrl, String user, String password, String strategy, int robotId) {
-        this(world, jdbcUrl, user, password, strategy, robotId, Link.JDBC);
+        this(world, jdbcUrl, user, password, Strategy.named(strategy), robotId, Link.JDBC, ScenarioPlugins.none());
     }
 
     /** @return these options over another link */
     public MissionOptions withLink(Link other) {
-        return new MissionOptions(world, jdbcUrl, user, password, strategy, robotId, other);
+        return new MissionOptions(world, jdbcUrl, user, password, strategy, robotId, other, plugins);
+    }
+
+    /** @return these options with these plug-ins and this strategy */
+    public MissionOptions withScenarios(ScenarioPlugins others, Strategy otherStrategy) {
+        return new MissionOptions(world, jdbcUrl, user, password, otherStrategy, robotId, link, others);
     }
 }

@@ -1,9 +1,10 @@
 package org.proactiverobotics.app.mission;
 
+import java.util.Collections;
+import java.util.Map;
+import java.util.TreeMap;
 import org.proactiverobotics.sim2d.GroundTruth;
 import org.proactiverobotics.sim2d.Simulation;
-
-import java.util.Map;
 
 /**
  * What report.json holds (DESIGN section 8): ground truth from the simulator, counts from both
@@ -78,7 +79,7 @@ public record MissionReport(
                 truth.checkpointsReached(), truth.checkpointsTotal(), simS, round(wallTimeS, 3),
                 round(simS / Math.max(wallTimeS, 1e-9), 1), controlSteps, engineIterations, round(truth.distanceM(), 3),
                 truth.collisions(), round(truth.minClearanceM(), 4), round(truth.minBatteryPct(), 2),
-                round(truth.batteryPct(), 2), truth.recharges(), Map.copyOf(commandWins), ruleFailures, timing);
+                round(truth.batteryPct(), 2), truth.recharges(), Collections.unmodifiableMap(new TreeMap<>(commandWins)), ruleFailures, timing);
     }
 
     /** @return the database kind a JDBC URL names: "h2", "mariadb", "mysql", ... */

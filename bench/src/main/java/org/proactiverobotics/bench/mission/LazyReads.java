@@ -33,10 +33,9 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * one the second only for the rules whose guard held. No state store (only the rules' reads).
  *
  * <p>Part 2, the robot's real scenarios over whole missions (each bundled world, lockstep as
- * {@code Mission}, the engine process's wiring: one transaction per iteration, state saved,
- * history pruned), once per algorithm, plus the production {@code EngineSide} (lazy) as a
- * cross-check of the rebuilt wiring. Only the engine side's statements are counted (state store
- * included); the robot has a pool of its own.
+ * {@code Mission}, the production {@code RobotEngine} wiring: one transaction per iteration, state
+ * saved, history pruned), once per algorithm (lazy is what every command runs). Only the engine
+ * side's statements are counted (state store included); the robot has a pool of its own.
  *
  * <p>A plain harness, not JMH: the figure is a count, deterministic; the times beside it are
  * means after a warm-up, for orientation.
@@ -192,7 +191,7 @@ public final class LazyReads {
         System.out.println("| world | engine | outcome | steps | DB reads / iteration | DB writes / iteration | engine ms / iteration |");
         System.out.println("|---|---|---|---|---|---|---|");
         for (String name : Worlds.BUNDLED) {
-            for (String variant : new String[] {"STANDARD", "LAZY", "EngineSide"}) {
+            for (String variant : new String[] {"STANDARD", "LAZY"}) {
                 String dbUrl = url != null ? url : Databases.embeddedH2Url("bench_lazy_" + name.replace('-', '_') + "_" + variant);
                 boolean h2 = dbUrl.startsWith("jdbc:h2:");
                 try (HikariDataSource pool = Databases.pool(dbUrl, h2 ? "sa" : null, h2 ? "" : null)) {
@@ -200,9 +199,7 @@ public final class LazyReads {
                     WorldSpec world = WorldFiles.bundled(name);
                     String user = h2 ? "sa" : null;
                     String password = h2 ? "" : null;
-                    try (Rig rig = variant.equals("EngineSide")
-                            ? Rig.jdbc(world, 1, counting, dbUrl, user, password)
-                            : Rig.jdbc(world, 1, counting, dbUrl, user, password, Algorithm.valueOf(variant))) {
+                    try (Rig rig = Rig.jdbc(world, 1, counting, dbUrl, user, password, Algorithm.valueOf(variant))) {
                         counting.reset();
                         GroundTruth truth = rig.truth();
                         String outcome;
@@ -224,7 +221,7 @@ public final class LazyReads {
                         System.out.printf(Locale.ROOT, "| %s | %s | %s | %d | %.2f | %.2f | %.3f |%n", name, variant, outcome,
                                 rig.steps, (double) counting.reads() / rig.steps, (double) counting.writes() / rig.steps,
                                 rig.engineNs / 1e6 / rig.steps);
-                        if (statements && !variant.equals("EngineSide")) {
+                        if (statements) {
                             counting.bySql().forEach((sql, n) -> System.out.printf(Locale.ROOT, "    %8.3f  %s%n",
                                     (double) n / rig.steps, sql.length() > 150 ? sql.substring(0, 150) + "..." : sql));
                         }

@@ -14,27 +14,17 @@ import java.util.function.Supplier;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
-import org.proactiverobotics.app.link.EngineTables;
-import org.proactiverobotics.app.mission.EngineSide;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.Algorithm;
 import org.proactiverobotics.engine.IterationSummary;
-import org.proactiverobotics.engine.IterationTransaction;
-import org.proactiverobotics.engine.JdbcStateStore;
-import org.proactiverobotics.engine.ProactiveEngine;
-import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.StateStore;
-import org.proactiverobotics.engine.StateStoreException;
 import org.proactiverobotics.engine.motion.DriveProfile;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.engine.tables.Checkpoint;
-import org.proactiverobotics.engine.tables.EngineComments;
-import org.proactiverobotics.engine.tables.JdbcRobotTables;
+import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.MissionTables;
-import org.proactiverobotics.engine.tables.SensorReadings;
-import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.Station;
-import org.proactiverobotics.engine.tables.StrategyTable;
 import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.robot.RobotConfig;
 import org.proactiverobotics.robot.link.JdbcRobotLink;
@@ -45,10 +35,9 @@ import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * One robot, wired as {@code Mission} wires it, stepped from outside: each {@link #step()} is the
- * robot's sense, one engine iteration, the robot's act and one physics step. Over the database
- * the engine side is {@link EngineSide#build(DataSource, int, DriveProfile,
- * org.proactiverobotics.engine.scenario.decision.DecisionObserver)} (the engine process's wiring:
- * one transaction per iteration, history pruned every 100 iterations) and the robot has a pool of
+ * robot's sense, one engine iteration, the robot's act and one physics step. The engine side is
+ * the production {@link RobotEngine} (over the database: one transaction per iteration, history
+ * pruned every 100 iterations) and, over the database, the robot has a pool of
  * its own ({@link RobotPool}, as a robot process has) with the default retention policy.
  *
  * <p>For endless runs, {@link #rearm()} starts a new lap once the engine has marked every
@@ -88,101 +77,52 @@ final class Rig implements AutoCloseable {
     }
 
     /**
-     * A robot over a shared database, its engine built by the production {@link EngineSide}.
+     * A robot over a shared database, its engine built by the production {@link RobotEngine}.
      *
      * @param enginePool the engine side's pool (schema applied); may be shared by many rigs
      * @param jdbcUrl    the database, for the robot's own pool
      */
     static Rig jdbc(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user, String password)
             throws SQLException {
-        prepare(enginePool, robotId);
-        EngineSide side = EngineSide.build(enginePool, robotId, profile(world), null);
-        side.startFresh();
-        return jdbcRobot(world, robotId, enginePool, jdbcUrl, user, password, side::iterate);
+        return jdbc(world, robotId, enginePool, jdbcUrl, user, password, Algorithm.LAZY);
     }
 
-    /**
-     * A robot over a shared database whose engine runs the given algorithm: EngineSide's wiring
-     * (one transaction per iteration, history pruned every {@value EngineSide#PRUNE_EVERY}
-     * iterations) rebuilt here, since EngineSide always runs the lazy algorithm.
-     */
+    /** As {@link #jdbc(WorldSpec, int, DataSource, String, String, String)}, the engine running the given algorithm. */
     static Rig jdbc(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user, String password,
                     Algorithm algorithm) throws SQLException {
         prepare(enginePool, robotId);
-        IterationTransaction tx = new IterationTransaction(enginePool);
-        JdbcRobotTables tables = new JdbcRobotTables(tx, robotId);
-        ProactiveEngine engine = engine(EngineTables.of(tables), new JdbcStateStore(tx), robotId, profile(world), algorithm);
-        engine.startFresh(ScenarioRegistry.load().startUp(EngineSide.SCENARIOS));
-        Supplier<IterationSummary> iterate = () -> {
-            tx.begin();
-            try {
-                IterationSummary s = engine.runIteration();
-                if (engine.iteration() % EngineSide.PRUNE_EVERY == 0) {
-                    tables.pruneHistory(EngineSide.KEEP_ROWS);
-                }
-                tx.commit();
-                return s;
-            } catch (SQLException e) {
-                tx.rollback();
-                throw new StateStoreException("commit: " + e.getMessage(), e);
-            } catch (RuntimeException e) {
-                tx.rollback();
-                throw e;
-            }
-        };
-        return jdbcRobot(world, robotId, enginePool, jdbcUrl, user, password, iterate);
-    }
-
-    private static Rig jdbcRobot(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user,
-                                 String password, Supplier<IterationSummary> iterate) {
+        RobotEngine engine = start(RobotEngine.builder().database(enginePool), world, robotId, algorithm);
         Simulation sim = new Simulation(world);
         var robotPool = RobotPool.open(jdbcUrl, user, password);
         ProactiveController controller = new ProactiveController(sim, new JdbcRobotLink(robotPool), RobotConfig.defaults(robotId));
-        return new Rig(robotId, world, sim, controller, iterate, enginePool, null, robotPool);
+        return new Rig(robotId, world, sim, controller, engine::iterate, enginePool, null, robotPool);
     }
 
     /** A robot over an in-process link of its own (no database, the engine's state not saved). */
     static Rig direct(WorldSpec world, int robotId, Algorithm algorithm) {
         DirectLink link = new DirectLink();
         DirectEngineTables tables = link.engine(robotId);
-        tables.write(Strategies.named(Strategies.SAFETY_FIRST));
         Laps laps = new Laps(tables);
         EngineTables wired = new EngineTables(tables, tables, laps, tables, tables, tables::pruneHistory);
-        ProactiveEngine engine = engine(wired, StateStore.none(), robotId, profile(world), algorithm);
-        engine.startFresh(ScenarioRegistry.load().startUp(EngineSide.SCENARIOS));
-        Supplier<IterationSummary> iterate = () -> {
-            IterationSummary s = engine.runIteration();
-            if (engine.iteration() % EngineSide.PRUNE_EVERY == 0) {
-                tables.pruneHistory(EngineSide.KEEP_ROWS);
-            }
-            return s;
-        };
+        RobotEngine engine = start(RobotEngine.builder().tables(wired, StateStore.none()), world, robotId, algorithm);
         Simulation sim = new Simulation(world);
         ProactiveController controller = new ProactiveController(sim, link, RobotConfig.defaults(robotId));
-        return new Rig(robotId, world, sim, controller, iterate, null, laps, null);
+        return new Rig(robotId, world, sim, controller, engine::iterate, null, laps, null);
     }
 
-    /** The engine as EngineSide builds it, with a choice of algorithm. */
-    private static ProactiveEngine engine(EngineTables tables, StateStore store, int robotId, DriveProfile profile,
-                                          Algorithm algorithm) {
-        return ProactiveEngine.builder()
-                .robotId(robotId)
-                .algorithm(algorithm)
-                .store(store)
-                .service(SensorReadings.class, tables.readings())
-                .service(SensorRequests.class, tables.requests())
-                .service(MissionTables.class, tables.mission())
-                .service(StrategyTable.class, tables.strategy())
-                .service(EngineComments.class, tables.comments())
-                .service(DriveProfile.class, profile)
-                .build();
+    /** The production wiring, started fresh with the default strategy, as Mission starts it. */
+    private static RobotEngine start(RobotEngine.Builder builder, WorldSpec world, int robotId, Algorithm algorithm) {
+        RobotEngine engine = builder.robotId(robotId).drive(profile(world)).algorithm(algorithm).build();
+        engine.startFresh();
+        engine.writeStrategy(Strategy.named(Strategy.SAFETY_FIRST));
+        return engine;
     }
 
     private static DriveProfile profile(WorldSpec world) {
         return new DriveProfile(world.robot().maxSpeedMps(), 2 * world.robot().radiusM());
     }
 
-    /** As Mission does: the schema, a clean slate for this robot id, the default strategy. */
+    /** As Mission does: the schema and a clean slate for this robot id. */
     private static void prepare(DataSource pool, int robotId) throws SQLException {
         Schema.apply(pool);
         try (Connection c = pool.getConnection()) {
@@ -193,7 +133,6 @@ final class Rig implements AutoCloseable {
                 }
             }
         }
-        new JdbcRobotTables(pool, robotId).write(Strategies.named(Strategies.SAFETY_FIRST));
     }
 
     /** One control step, timed by part; returns its wall time, ns. */

@@ -11,7 +11,7 @@ import org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario;
 class BatteryMonitorScenarioTest {
 
     private static Suggestion suggestion(RobotTablesFixture f) {
-        return f.engine.memory().commandArray().get(BatteryMonitorScenario.SLOT);
+        return f.engine.memory().commandArray().get(f.engine.memory().slotOf(BatteryMonitorScenario.NAME));
     }
 
     private static boolean queued(RobotTablesFixture f, String ruleName) {

@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.proactiverobotics.engine.CommandArray;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.engine.tables.StrategyTable;
 
 /** Scenario 5 alone: ReadRobotCommands obeys the PriorityArray and SendRobotCommand writes the winner. */
@@ -21,7 +21,7 @@ class DecisionMakingScenarioTest {
     @Test
     void theHighestPriorityThatHoldsACommandWinsAndIsSentTheNextIteration() throws Exception {
         try (RobotTablesFixture f = new RobotTablesFixture("DecisionMaking")) {
-            f.tables.write(Strategies.named(Strategies.SAFETY_FIRST));
+            f.tables.write(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots()));
             f.iterate(2);
             suggest(f, 0, "DRIVE 0.5 0.5", "ReachDestination");
             suggest(f, 2, "DRIVE 0 0.3", "ObstacleAvoidance");
@@ -36,7 +36,7 @@ class DecisionMakingScenarioTest {
     @Test
     void anEmptyHighestSlotFallsToTheNextAndNothingAtAllMeansStop() throws Exception {
         try (RobotTablesFixture f = new RobotTablesFixture("DecisionMaking")) {
-            f.tables.write(Strategies.named(Strategies.SAFETY_FIRST));
+            f.tables.write(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots()));
             f.iterate(2);
             suggest(f, 0, "DRIVE 0.5 0.5", "ReachDestination");
             f.iterate(2);
@@ -48,11 +48,11 @@ class DecisionMakingScenarioTest {
     @Test
     void aStrategyChangedInTheTableDecidesTheNextIteration() throws Exception {
         try (RobotTablesFixture f = new RobotTablesFixture("DecisionMaking")) {
-            f.tables.write(Strategies.named(Strategies.SAFETY_FIRST));
+            f.tables.write(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots()));
             f.iterate(2);
             suggest(f, 0, "DRIVE 0.5 0.5", "ReachDestination");
             suggest(f, 2, "DRIVE 0 0.3", "ObstacleAvoidance");
-            f.tables.write(Strategies.named(Strategies.DESTINATION_FIRST));
+            f.tables.write(Strategy.named(Strategy.DESTINATION_FIRST).rows(f.engine.memory().slots()));
             f.iterate(2);
             assertThat(f.commands()).containsExactly("DRIVE 0.5 0.5");
         }
@@ -61,7 +61,7 @@ class DecisionMakingScenarioTest {
     @Test
     void aSuggestionWithinItsTimeOutIsTakenAndOnePastItIsNotTheNextPriorityWins() throws Exception {
         try (RobotTablesFixture f = new RobotTablesFixture("DecisionMaking")) {
-            List<StrategyTable.Entry> strategy = new ArrayList<>(Strategies.named(Strategies.SAFETY_FIRST));
+            List<StrategyTable.Entry> strategy = new ArrayList<>(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots()));
             strategy.set(2, strategy.get(2).withTimeoutMs(100)); // avoidance's word holds 100 ms
             f.tables.write(strategy);
             f.iterate(2);
@@ -83,7 +83,7 @@ class DecisionMakingScenarioTest {
     @Test
     void aNewSuggestionStartsItsTimeOutAgain() throws Exception {
         try (RobotTablesFixture f = new RobotTablesFixture("DecisionMaking")) {
-            List<StrategyTable.Entry> strategy = new ArrayList<>(Strategies.named(Strategies.SAFETY_FIRST));
+            List<StrategyTable.Entry> strategy = new ArrayList<>(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots()));
             strategy.set(2, strategy.get(2).withTimeoutMs(100));
             f.tables.write(strategy);
             f.iterate(2);
@@ -103,22 +103,23 @@ class DecisionMakingScenarioTest {
     @Test
     void theTimeOutsAreReadFromTheStrategyTable() throws Exception {
         try (RobotTablesFixture f = new RobotTablesFixture("DecisionMaking")) {
-            List<StrategyTable.Entry> strategy = new ArrayList<>(Strategies.named(Strategies.SAFETY_FIRST));
+            List<StrategyTable.Entry> strategy = new ArrayList<>(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots()));
             strategy.set(1, strategy.get(1).withTimeoutMs(250));
             f.tables.write(strategy);
             assertThat(f.tables.read()).extracting(StrategyTable.Entry::timeoutMs).containsExactly(0L, 250L, 0L);
-            assertThat(Strategies.named(Strategies.SAFETY_FIRST)).allSatisfy(e -> assertThat(e.timeoutMs()).isZero());
+            assertThat(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots())).allSatisfy(e -> assertThat(e.timeoutMs()).isZero());
             assertThatThrownBy(() -> strategy.get(0).withTimeoutMs(-1)).isInstanceOf(IllegalArgumentException.class);
         }
     }
 
     @Test
     void strategiesAreNamedAndAnUnknownNameListsTheKnownOnes() {
-        assertThat(Strategies.names()).startsWith(Strategies.SAFETY_FIRST);
-        assertThat(Strategies.named(Strategies.SAFETY_FIRST)).extracting(e -> e.scenario() + "=" + e.priority())
+        assertThat(Strategy.names()).startsWith(Strategy.SAFETY_FIRST);
+        assertThat(Strategy.named(Strategy.SAFETY_FIRST).rows(java.util.Map.of("ReachDestination", 0, "BatteryMonitor", 1,
+                "ObstacleAvoidance", 2))).extracting(e -> e.scenario() + "=" + e.priority())
                 .containsExactly("ReachDestination=1", "BatteryMonitor=2", "ObstacleAvoidance=3");
-        assertThatThrownBy(() -> Strategies.named("yolo")).isInstanceOf(IllegalArgumentException.class)
-                .hasMessageContaining("yolo").hasMessageContaining(String.join(", ", Strategies.names()));
-        assertThat(List.copyOf(Strategies.names())).doesNotHaveDuplicates();
+        assertThatThrownBy(() -> Strategy.named("yolo")).isInstanceOf(IllegalArgumentException.class)
+                .hasMessageContaining("yolo").hasMessageContaining(String.join(", ", Strategy.names()));
+        assertThat(List.copyOf(Strategy.names())).doesNotHaveDuplicates();
     }
 }

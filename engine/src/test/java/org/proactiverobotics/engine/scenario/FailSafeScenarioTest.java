@@ -26,7 +26,7 @@ import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario
 import org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario;
 import org.proactiverobotics.engine.scenario.dataacquisition.DataAcquisitionScenario;
 import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
-import org.proactiverobotics.engine.scenario.decision.Strategies;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.engine.scenario.destination.ReachDestinationScenario;
 import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
 import org.proactiverobotics.engine.scenario.failsafe.WatchFailures;
@@ -60,7 +60,7 @@ class FailSafeScenarioTest {
 
     private RobotTablesFixture mission() throws Exception {
         RobotTablesFixture f = new RobotTablesFixture(ORDER);
-        f.tables.write(Strategies.named(Strategies.SAFETY_FIRST));
+        f.tables.write(Strategy.named(Strategy.SAFETY_FIRST).rows(f.engine.memory().slots()));
         f.checkpoint(0, 0.0, 3.0);
         f.station(-3.0, 0.0, 100.0);
         return f;
@@ -259,7 +259,7 @@ class FailSafeScenarioTest {
 
         @Override
         protected void actions(RuleContext ctx) {
-            ctx.memory().commandArray().enter(ObstacleAvoidanceScenario.SLOT, "DRIVE 0.5 0.5", scenario(), ctx.iteration());
+            ctx.suggest("DRIVE 0.5 0.5");
         }
 
         @Override

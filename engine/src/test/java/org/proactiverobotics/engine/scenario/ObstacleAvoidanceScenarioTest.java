@@ -12,7 +12,7 @@ class ObstacleAvoidanceScenarioTest {
     private static final double FREE = 1.0;
 
     private static Suggestion suggestion(RobotTablesFixture f) {
-        return f.engine.memory().commandArray().get(ObstacleAvoidanceScenario.SLOT);
+        return f.engine.memory().commandArray().get(f.engine.memory().slotOf(ObstacleAvoidanceScenario.NAME));
     }
 
     private static double[] wheels(Suggestion s) {

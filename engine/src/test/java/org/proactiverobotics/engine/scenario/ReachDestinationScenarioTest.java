@@ -11,7 +11,7 @@ import org.proactiverobotics.engine.scenario.destination.ReachDestinationScenari
 class ReachDestinationScenarioTest {
 
     private static Suggestion suggestion(RobotTablesFixture f) {
-        return f.engine.memory().commandArray().get(ReachDestinationScenario.SLOT);
+        return f.engine.memory().commandArray().get(f.engine.memory().slotOf(ReachDestinationScenario.NAME));
     }
 
     @Test

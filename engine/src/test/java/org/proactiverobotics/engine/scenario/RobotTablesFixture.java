@@ -63,6 +63,9 @@ final class RobotTablesFixture implements AutoCloseable {
                 .service(EngineComments.class, faulty)
                 .service(DriveProfile.class, DriveProfile.DEFAULT)
                 .service(DecisionObserver.class, this::decided)
+                .slot("ReachDestination", 0)
+                .slot("BatteryMonitor", 1)
+                .slot("ObstacleAvoidance", 2)
                 .build();
         engine.startFresh(ScenarioRegistry.load().startUp(List.of(scenarios)));
     }

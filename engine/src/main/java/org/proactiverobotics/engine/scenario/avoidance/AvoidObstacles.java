@@ -94,7 +94,7 @@ public final class AvoidObstacles extends Rule {
 
     @Override
     protected void actions(RuleContext ctx) {
-        ctx.memory().commandArray().enter(ObstacleAvoidanceScenario.SLOT, suggestion, scenario(), ctx.iteration());
+        ctx.suggest(suggestion);
     }
 
     @Override

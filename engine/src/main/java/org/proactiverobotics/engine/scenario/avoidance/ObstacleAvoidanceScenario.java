@@ -9,8 +9,6 @@ public final class ObstacleAvoidanceScenario implements Scenario {
 
     /** The scenario's name in configuration and records. */
     public static final String NAME = "ObstacleAvoidance";
-    /** Its default index in the CommandArray. */
-    public static final int SLOT = 2;
 
     @Override
     public String name() {

@@ -9,8 +9,6 @@ public final class BatteryMonitorScenario implements Scenario {
 
     /** The scenario's name in configuration and records. */
     public static final String NAME = "BatteryMonitor";
-    /** Its default index in the CommandArray. */
-    public static final int SLOT = 1;
 
     @Override
     public String name() {

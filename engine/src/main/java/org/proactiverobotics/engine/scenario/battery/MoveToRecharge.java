@@ -82,7 +82,7 @@ public final class MoveToRecharge extends Rule {
             DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
             command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), xM, yM, profile);
         }
-        ctx.memory().commandArray().enter(BatteryMonitorScenario.SLOT, command, scenario(), ctx.iteration());
+        ctx.suggest(command);
     }
 
     @Override

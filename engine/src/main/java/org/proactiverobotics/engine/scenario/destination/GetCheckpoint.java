@@ -43,7 +43,7 @@ public final class GetCheckpoint extends Rule {
 
     @Override
     protected void actions(RuleContext ctx) {
-        ctx.memory().commandArray().enter(ReachDestinationScenario.SLOT, Steering.STOP, scenario(), ctx.iteration());
+        ctx.suggest(Steering.STOP);
     }
 
     @Override

@@ -81,7 +81,7 @@ public final class MoveToCheckpoint extends Rule {
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         String command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), xM, yM, profile);
-        ctx.memory().commandArray().enter(ReachDestinationScenario.SLOT, command, scenario(), ctx.iteration());
+        ctx.suggest(command);
     }
 
     @Override

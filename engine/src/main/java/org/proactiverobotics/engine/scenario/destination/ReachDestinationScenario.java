@@ -9,8 +9,6 @@ public final class ReachDestinationScenario implements Scenario {
 
     /** The scenario's name in configuration and records. */
     public static final String NAME = "ReachDestination";
-    /** Its default index in the CommandArray. */
-    public static final int SLOT = 0;
 
     @Override
     public String name() {

@@ -1,7 +1,7 @@
 /**
  * Scenario 2, Reach destination: GetCheckpoint finds the first checkpoint not yet reached and
  * generates MoveToCheckpoint, which steers toward it until it is reached, marks it, and hands
- * back to GetCheckpoint. Suggests in CommandArray slot {@value
- * org.proactiverobotics.engine.scenario.destination.ReachDestinationScenario#SLOT}.
+ * back to GetCheckpoint. Suggests with {@code ctx.suggest}, in the
+ * CommandArray slot the engine gives the scenario.
  */
 package org.proactiverobotics.engine.scenario.destination;

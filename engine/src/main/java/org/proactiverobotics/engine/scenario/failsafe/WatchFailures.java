@@ -18,7 +18,6 @@ import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
-import org.proactiverobotics.engine.tables.StrategyTable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -31,7 +30,7 @@ import org.slf4j.LoggerFactory;
  *       generated);</li>
  *   <li>a failed scenario with no rule left ({@link RuleContext#scheduled}: a failed rule is not
  *       regenerated) is stood in for by STOP, entered as this scenario's suggestion in the gone
- *       scenario's slot (from the strategy table), so the strategy still decides: under
+ *       scenario's slot (the one the engine gave it), so the strategy still decides: under
  *       safety-first a dead obstacle avoidance stops the robot rather than let it drive blind.
  *       A scenario without a slot (data acquisition, the decision itself) gets its STOP in the
  *       top-priority slot and, once, sent straight to engine_comments, because without it the
@@ -51,9 +50,8 @@ import org.slf4j.LoggerFactory;
  * rule of several (data acquisition losing GetDS) still has rules, so it is not restarted
  * (restarting would run the others twice); its failure is recorded.
  *
- * <p>This rule does no I/O it cannot do without: it reads the strategy (keeping the last slots
- * it knew when that fails) and sends STOP for a gone scenario without a slot (logged when that
- * fails); either failing never makes this rule fail.
+ * <p>This rule does no I/O it cannot do without: it sends STOP for a gone scenario without a
+ * slot (logged when that fails); that failing never makes this rule fail.
  */
 public final class WatchFailures extends Rule {
 
@@ -69,8 +67,6 @@ public final class WatchFailures extends Rule {
 
     /** The scenarios in trouble, by name. */
     private TreeMap<String, Episode> episodes = new TreeMap<>();
-    /** Each scenario's CommandArray slot, from the strategy table as last read. */
-    private TreeMap<String, Integer> slots = new TreeMap<>();
 
     private transient List<RuleFailure> failures = List.of();
     private transient List<MetaRule> restartBefore = new ArrayList<>();
@@ -98,19 +94,6 @@ public final class WatchFailures extends Rule {
     @Override
     protected boolean activationGuards(RuleContext ctx) {
         return !failures.isEmpty() || !episodes.isEmpty();
-    }
-
-    @Override
-    protected void acquireConditionData(RuleContext ctx) {
-        try {
-            TreeMap<String, Integer> read = new TreeMap<>();
-            for (StrategyTable.Entry e : ctx.service(StrategyTable.class).read()) {
-                read.put(e.scenario(), e.slot());
-            }
-            slots = read;
-        } catch (RuntimeException e) {
-            LOG.debug("fail-safe: strategy unreadable, keeping the slots last known {}", slots, e);
-        }
     }
 
     @Override
@@ -175,7 +158,7 @@ public final class WatchFailures extends Rule {
                     LOG.warn("fail-safe: scenario {} has no rule left; STOP stands in for it in slot {}", scenario,
                             slotOf(ctx, scenario));
                 }
-                if (!slots.containsKey(scenario)) {
+                if (ctx.memory().slotOf(scenario) < 0) {
                     sendStop(ctx, scenario);
                 }
             }
@@ -251,8 +234,8 @@ public final class WatchFailures extends Rule {
 
     /** The scenario's slot, or the top-priority one when it has none. */
     private int slotOf(RuleContext ctx, String scenario) {
-        Integer slot = slots.get(scenario);
-        if (slot != null && slot >= 0 && slot < ctx.memory().commandArray().size()) {
+        int slot = ctx.memory().slotOf(scenario);
+        if (slot >= 0 && slot < ctx.memory().commandArray().size()) {
             return slot;
         }
         return ctx.memory().priorityArray().slotsByPriority()[0];

@@ -1,13 +1,7 @@
-package org.proactiverobotics.app.link;
+package org.proactiverobotics.engine.tables;
 
 import java.util.Objects;
 import java.util.function.IntUnaryOperator;
-import org.proactiverobotics.engine.tables.EngineComments;
-import org.proactiverobotics.engine.tables.JdbcRobotTables;
-import org.proactiverobotics.engine.tables.MissionTables;
-import org.proactiverobotics.engine.tables.SensorReadings;
-import org.proactiverobotics.engine.tables.SensorRequests;
-import org.proactiverobotics.engine.tables.StrategyTable;
 
 /**
  * The engine side of one robot's communication layer: the table interfaces the scenarios ask
@@ -36,11 +30,16 @@ public record EngineTables(SensorReadings readings, SensorRequests requests, Mis
 
     /** @return the engine side over the shared database */
     public static EngineTables of(JdbcRobotTables tables) {
-        return new EngineTables(tables, tables, tables, tables, tables, tables::pruneHistory);
+        return of(tables, tables::pruneHistory);
     }
 
-    /** @return the engine side of an in-process link */
-    public static EngineTables of(DirectEngineTables tables) {
-        return new EngineTables(tables, tables, tables, tables, tables, tables::pruneHistory);
+    /**
+     * @param tables       one object that is every table (a communication layer's engine side)
+     * @param pruneHistory keeps the newest n rows of the engine's history; returns how many went
+     * @return the engine side of that layer
+     */
+    public static <T extends SensorReadings & SensorRequests & MissionTables & StrategyTable & EngineComments>
+            EngineTables of(T tables, IntUnaryOperator pruneHistory) {
+        return new EngineTables(tables, tables, tables, tables, tables, pruneHistory);
     }
 }

@@ -1,0 +1,434 @@
+package org.proactiverobotics.engine.robot;
+
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+import java.util.function.UnaryOperator;
+import javax.sql.DataSource;
+import org.proactiverobotics.engine.Algorithm;
+import org.proactiverobotics.engine.IterationListener;
+import org.proactiverobotics.engine.IterationSummary;
+import org.proactiverobotics.engine.IterationTransaction;
+import org.proactiverobotics.engine.JdbcStateStore;
+import org.proactiverobotics.engine.ProactiveEngine;
+import org.proactiverobotics.engine.Scenario;
+import org.proactiverobotics.engine.ScenarioRegistry;
+import org.proactiverobotics.engine.StartUp;
+import org.proactiverobotics.engine.StateCodec;
+import org.proactiverobotics.engine.StateStore;
+import org.proactiverobotics.engine.StateStoreException;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
+import org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario;
+import org.proactiverobotics.engine.scenario.dataacquisition.DataAcquisitionScenario;
+import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
+import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
+import org.proactiverobotics.engine.scenario.destination.ReachDestinationScenario;
+import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
+import org.proactiverobotics.engine.tables.EngineComments;
+import org.proactiverobotics.engine.tables.EngineTables;
+import org.proactiverobotics.engine.tables.JdbcRobotTables;
+import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.SensorRequests;
+import org.proactiverobotics.engine.tables.StrategyTable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The engine side of one robot, wired as every caller runs it (the one-process mission, the
+ * engine process, tests, benchmarks): the Proactive Engine with the built-in scenarios and any
+ * plug-ins in the standard order, the table services, the strategy, a saved state, one
+ * transaction per iteration over a database, and the pruning that keeps the engine's history
+ * bounded.
+ *
+ * <p>Start order: {@value #ORDER_TEXT}. Slots: the built-in scenarios that suggest keep the
+ * CommandArray slots they always had (ReachDestination 0, BatteryMonitor 1, ObstacleAvoidance 2),
+ * so states saved by earlier versions resume; each plug-in gets the next free slot, in the order
+ * given; a saved state's slots are kept on a resume.
+ *
+ * <pre>{@code
+ * RobotEngine engine = RobotEngine.builder().robotId(1).database(dataSource)
+ *         .drive(new DriveProfile(0.5, 0.24)).plugins(ScenarioPlugins.load(jars, RobotEngine.builtInScenarios()))
+ *         .build();
+ * engine.startFresh();                       // or resume()
+ * engine.writeStrategy(Strategy.named("safety-first"));
+ * engine.iterate();                          // once per control step
+ * }</pre>
+ */
+public final class RobotEngine {
+
+    /** The start order, for the javadoc. */
+    static final String ORDER_TEXT = "DataAcquisition, BatteryMonitor, ReachDestination, ObstacleAvoidance,"
+            + " the plug-ins in the order given, FailSafe, DecisionMaking";
+    /** Prune the engine's history every this many iterations. */
+    public static final int PRUNE_EVERY = 100;
+    /** Keep this many of the robot's newest commands, answered requests and rule failures. */
+    public static final int KEEP_ROWS = 1000;
+
+    /** Built-in scenarios started before the plug-ins (the paper's 1 → 4 → 2 → 3), with their slots (-1: none). */
+    private static final Map<String, Integer> FIRST = orderedMap(
+            DataAcquisitionScenario.NAME, -1,
+            BatteryMonitorScenario.NAME, 1,
+            ReachDestinationScenario.NAME, 0,
+            ObstacleAvoidanceScenario.NAME, 2);
+    /** Started after every scenario that suggests: the fail-safe withdraws a failing one's word before the decision reads it. */
+    private static final List<String> LAST = List.of(FailSafeScenario.NAME, DecisionMakingScenario.NAME);
+
+    private static final Logger LOG = LoggerFactory.getLogger(RobotEngine.class);
+
+    private final ProactiveEngine engine;
+    private final EngineTables tables;
+    private final IterationTransaction transaction;
+    private final ScenarioRegistry registry;
+    private final List<String> order;
+    /** An iteration ran in memory but its transaction did not commit. */
+    private boolean aheadOfDatabase;
+
+    private RobotEngine(ProactiveEngine engine, EngineTables tables, IterationTransaction transaction,
+                        ScenarioRegistry registry, List<String> order) {
+        this.engine = engine;
+        this.tables = tables;
+        this.transaction = transaction;
+        this.registry = registry;
+        this.order = order;
+    }
+
+    /** @return a builder: robot 1, lazy algorithm, the default drive, no plug-ins */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /** @return the names of the built-in scenarios, which a plug-in may not take */
+    public static Set<String> builtInScenarios() {
+        Set<String> names = new LinkedHashSet<>(FIRST.keySet());
+        names.addAll(LAST);
+        return names;
+    }
+
+    /**
+     * The slots a fresh engine gives, before it starts: what a strategy is checked against
+     * before anything runs.
+     *
+     * @param plugins the plug-ins that will be loaded
+     * @return each suggesting scenario's slot on a fresh start, by slot
+     */
+    public static Map<String, Integer> freshSlots(ScenarioPlugins plugins) {
+        Map<String, Integer> slots = new LinkedHashMap<>();
+        FIRST.forEach((name, slot) -> {
+            if (slot >= 0) {
+                slots.put(name, slot);
+            }
+        });
+        int next = 0;
+        for (String name : plugins.scenarios().keySet()) {
+            while (slots.containsValue(next)) {
+                next++;
+            }
+            slots.put(name, next);
+        }
+        Map<String, Integer> bySlot = new LinkedHashMap<>();
+        slots.entrySet().stream().sorted(Map.Entry.comparingByValue()).forEach(e -> bySlot.put(e.getKey(), e.getValue()));
+        return Collections.unmodifiableMap(bySlot);
+    }
+
+    /** Starts from StartUp, discarding any saved state of this robot's engine. */
+    public void startFresh() {
+        engine.startFresh(new StartUp(order));
+    }
+
+    /**
+     * Resumes from the saved state, or starts from StartUp when there is none.
+     *
+     * @return whether a saved state was resumed
+     */
+    public boolean resume() {
+        engine.start(new StartUp(order));
+        return engine.resumed();
+    }
+
+    /**
+     * Runs one iteration (state saved at its end) and, every {@value #PRUNE_EVERY} iterations,
+     * prunes the engine's history. Over a database, all of it is one transaction: the rules'
+     * writes and the saved state commit together or not at all.
+     *
+     * @return the iteration's summary
+     * @throws StateStoreException when the state (or the iteration's transaction) cannot be
+     *                             saved; nothing of the iteration is then in the database
+     */
+    public IterationSummary iterate() {
+        IterationSummary summary;
+        if (transaction == null) {
+            summary = engine.runIteration();
+        } else {
+            if (aheadOfDatabase) {
+                resume(); // the last iteration ran in memory but never committed: the database is the truth
+                aheadOfDatabase = false;
+            }
+            transaction.begin();
+            try {
+                summary = engine.runIteration();
+                transaction.commit();
+            } catch (SQLException e) {
+                transaction.rollback();
+                aheadOfDatabase = true;
+                throw new StateStoreException("committing iteration " + engine.iteration() + " of robot "
+                        + engine.robotId() + ": " + e.getMessage(), e);
+            } catch (RuntimeException e) {
+                transaction.rollback();
+                aheadOfDatabase = true;
+                throw e;
+            }
+        }
+        if (engine.iteration() % PRUNE_EVERY == 0) {
+            prune();
+        }
+        return summary;
+    }
+
+    /** Housekeeping after the iteration, in its own transactions: a failure here costs the iteration nothing. */
+    private void prune() {
+        try {
+            tables.pruneHistory().applyAsInt(KEEP_ROWS);
+        } catch (RuntimeException e) {
+            LOG.warn("robot {}: pruning the engine's history failed (will try again in {} iterations): {}",
+                    engine.robotId(), PRUNE_EVERY, e.getMessage());
+        }
+    }
+
+    /**
+     * Writes a strategy to the robot's strategy table, in the slots the engine gave (start the
+     * engine first); the next iteration obeys it.
+     *
+     * @param strategy the strategy
+     * @return the scenarios that suggest but that the strategy leaves out (they rank below every listed one)
+     * @throws StrategyException when the strategy names a scenario that is not loaded or does not suggest
+     */
+    public List<String> writeStrategy(Strategy strategy) {
+        Map<String, Integer> slots = slots();
+        tables.strategy().write(strategy.rows(slots));
+        return strategy.unlisted(slots);
+    }
+
+    /**
+     * Writes the strategy when the table holds none; else keeps the one there (a strategy changed
+     * while the robot ran survives a restart), rewritten by scenario name when it does not match
+     * the slots the engine gave (a plug-in added since ranks below the others).
+     *
+     * @param strategy written when none is set
+     * @return true when the given strategy was written
+     */
+    public boolean ensureStrategy(Strategy strategy) {
+        List<StrategyTable.Entry> rows = tables.strategy().read();
+        if (rows.isEmpty()) {
+            writeStrategy(strategy);
+            return true;
+        }
+        Map<String, Integer> slots = slots();
+        boolean matches = rows.size() == slots.size()
+                && rows.stream().allMatch(e -> Objects.equals(slots.get(e.scenario()), e.slot()));
+        if (!matches) {
+            Strategy kept = Strategy.of(rows.stream().filter(e -> slots.containsKey(e.scenario())).toList());
+            tables.strategy().write(kept.rows(slots));
+            LOG.info("robot {}: strategy rows rewritten for the scenarios' slots {}", engine.robotId(), slots);
+        }
+        return false;
+    }
+
+    /** @return each suggesting scenario's CommandArray slot (after a start) */
+    public Map<String, Integer> slots() {
+        return engine.memory().slots();
+    }
+
+    /** @return the scenarios StartUp starts, in order */
+    public List<String> scenarios() {
+        return order;
+    }
+
+    /** @return every scenario known by name (built-in and plug-ins) */
+    public ScenarioRegistry registry() {
+        return registry;
+    }
+
+    /** @return the engine */
+    public ProactiveEngine engine() {
+        return engine;
+    }
+
+    /** @return what the engine's rules read and write, whatever the layer */
+    public EngineTables tables() {
+        return tables;
+    }
+
+    @SafeVarargs
+    private static <V> Map<String, V> orderedMap(Object... keysAndValues) {
+        Map<String, V> map = new LinkedHashMap<>();
+        for (int i = 0; i < keysAndValues.length; i += 2) {
+            @SuppressWarnings("unchecked")
+            V value = (V) keysAndValues[i + 1];
+            map.put((String) keysAndValues[i], value);
+        }
+        return Collections.unmodifiableMap(map);
+    }
+
+    /** Configures a {@link RobotEngine}; every setting but the tables has a default. */
+    public static final class Builder {
+        private int robotId = 1;
+        private Algorithm algorithm = Algorithm.LAZY;
+        private DriveProfile drive = new DriveProfile(0.5, 0.24);
+        private DataSource dataSource;
+        private EngineTables tables;
+        private StateStore store;
+        private UnaryOperator<EngineTables> decorate = UnaryOperator.identity();
+        private ScenarioPlugins plugins = ScenarioPlugins.none();
+        private DecisionObserver observer;
+        private Set<String> only;
+        private final List<IterationListener> listeners = new ArrayList<>();
+
+        private Builder() {
+        }
+
+        /** @param robotId the robot, the {@code robot_id} of the engine's tables and state */
+        public Builder robotId(int robotId) {
+            this.robotId = robotId;
+            return this;
+        }
+
+        /** @param algorithm lazy (the default) or standard data acquisition */
+        public Builder algorithm(Algorithm algorithm) {
+            this.algorithm = Objects.requireNonNull(algorithm);
+            return this;
+        }
+
+        /** @param drive the robot's drive as the engine assumes it (maximum wheel speed m/s, axle width m) */
+        public Builder drive(DriveProfile drive) {
+            this.drive = Objects.requireNonNull(drive);
+            return this;
+        }
+
+        /**
+         * Over a shared database (schema applied): the robot's tables, the saved state, and one
+         * transaction per iteration.
+         *
+         * @param dataSource the database
+         */
+        public Builder database(DataSource dataSource) {
+            this.dataSource = Objects.requireNonNull(dataSource);
+            this.tables = null;
+            return this;
+        }
+
+        /**
+         * Over any communication layer (an in-process link, a wrapped one in a test).
+         *
+         * @param tables what the rules read and write
+         * @param store  where the state is saved ({@link StateStore#none()}: nowhere)
+         */
+        public Builder tables(EngineTables tables, StateStore store) {
+            this.tables = Objects.requireNonNull(tables);
+            this.store = Objects.requireNonNull(store);
+            this.dataSource = null;
+            return this;
+        }
+
+        /** @param decorate wraps the tables the rules see (fault injection in a test, a counter in a benchmark) */
+        public Builder decorate(UnaryOperator<EngineTables> decorate) {
+            this.decorate = Objects.requireNonNull(decorate);
+            return this;
+        }
+
+        /** @param plugins scenarios from outside, started after the built-in ones that suggest */
+        public Builder plugins(ScenarioPlugins plugins) {
+            this.plugins = Objects.requireNonNull(plugins);
+            return this;
+        }
+
+        /**
+         * Starts only these scenarios (built-in or plug-ins), still in the standard order: a test
+         * of one scenario alone. Slots are given as usual, so a scenario suggests into its own.
+         *
+         * @param scenarios the names of the scenarios to start
+         */
+        public Builder only(String... scenarios) {
+            this.only = new LinkedHashSet<>(List.of(scenarios));
+            return this;
+        }
+
+        /** @param observer told of every decision (a trace), or null */
+        public Builder observer(DecisionObserver observer) {
+            this.observer = observer;
+            return this;
+        }
+
+        /** @param listener observes every iteration and rule */
+        public Builder listener(IterationListener listener) {
+            listeners.add(Objects.requireNonNull(listener));
+            return this;
+        }
+
+        /**
+         * @return the engine side, not started: call {@link #startFresh()} or {@link #resume()}
+         * @throws IllegalStateException when neither a database nor tables were given
+         */
+        public RobotEngine build() {
+            IterationTransaction transaction = null;
+            EngineTables base = tables;
+            StateStore stateStore = store;
+            StateCodec codec = new StateCodec(plugins.classLoader());
+            if (dataSource != null) {
+                transaction = new IterationTransaction(dataSource);
+                base = EngineTables.of(new JdbcRobotTables(transaction, robotId));
+                stateStore = new JdbcStateStore(transaction, codec);
+            } else if (base == null) {
+                throw new IllegalStateException("give the engine a database or tables");
+            }
+            EngineTables wired = decorate.apply(base);
+
+            List<Scenario> known = new ArrayList<>();
+            ScenarioRegistry builtIn = ScenarioRegistry.load(RobotEngine.class.getClassLoader());
+            builtIn.names().forEach(name -> known.add(builtIn.get(name)));
+            known.addAll(plugins.scenarios().values());
+            ScenarioRegistry registry = ScenarioRegistry.of(known);
+
+            List<String> order = new ArrayList<>(FIRST.keySet());
+            order.addAll(plugins.scenarios().keySet());
+            order.addAll(LAST);
+            if (only != null) {
+                only.forEach(registry::get); // an unknown name fails here, naming the known ones
+                order.retainAll(only);
+            }
+
+            ProactiveEngine.Builder b = ProactiveEngine.builder()
+                    .robotId(robotId)
+                    .algorithm(algorithm)
+                    .store(stateStore)
+                    .service(ScenarioRegistry.class, registry)
+                    .service(SensorReadings.class, wired.readings())
+                    .service(SensorRequests.class, wired.requests())
+                    .service(MissionTables.class, wired.mission())
+                    .service(StrategyTable.class, wired.strategy())
+                    .service(EngineComments.class, wired.comments())
+                    .service(DriveProfile.class, drive);
+            FIRST.forEach((name, slot) -> {
+                if (slot >= 0) {
+                    b.slot(name, slot);
+                }
+            });
+            plugins.scenarios().keySet().forEach(b::slot);
+            if (observer != null) {
+                b.service(DecisionObserver.class, observer);
+            }
+            listeners.forEach(b::listener);
+            if (stateStore == null) {
+                throw new IllegalStateException("give the engine a state store with its tables");
+            }
+            return new RobotEngine(b.build(), wired, transaction, registry, List.copyOf(order));
+        }
+    }
+}
