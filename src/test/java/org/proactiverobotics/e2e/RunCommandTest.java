@@ -9,7 +9,7 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** {@code run} through the real command line (DESIGN sections 7 and 8). */
+/** {@code run} through the real command line (docs/command-line.md, docs/report.md). */
 class RunCommandTest extends CommandLineTest {
 
     @TempDir

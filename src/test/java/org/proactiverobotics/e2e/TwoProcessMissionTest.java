@@ -145,7 +145,7 @@ class TwoProcessMissionTest {
         return options;
     }
 
-    /** The simulator's ground truth (DESIGN section 8) and the step counts match, field by field. */
+    /** The simulator's ground truth (docs/report.md) and the step counts match, field by field. */
     static void assertSameGroundTruth(JsonObject twoProcesses, MissionReport oneProcess) {
         assertThat(twoProcesses.get("outcome").getAsString()).isEqualTo(oneProcess.outcome().name());
         assertThat(twoProcesses.get("checkpointsReached").getAsInt()).isEqualTo(oneProcess.checkpointsReached());

@@ -10,7 +10,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** {@code validate --world FILE} through the real command line (DESIGN section 7). */
+/** {@code validate --world FILE} through the real command line (docs/command-line.md). */
 class ValidateCommandTest extends CommandLineTest {
 
     /** The project's worlds/ directory, found from wherever the tests run. */

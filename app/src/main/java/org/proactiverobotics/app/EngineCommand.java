@@ -21,7 +21,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code engine}: the Proactive Engine process of the paper's deployment (DESIGN section 7): the
+ * {@code engine}: the Proactive Engine process of the paper's deployment (docs/command-line.md): the
  * robot's scenarios against a shared database, resuming from the saved state, serving the runs
  * of a robot process until stopped (SIGTERM / Ctrl-C: the current iteration ends, its state is
  * saved, exit 0).

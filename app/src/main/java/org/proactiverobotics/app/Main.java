@@ -4,7 +4,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /**
- * The {@code proactive} command line: one jar, one subcommand per job (DESIGN section 7).
+ * The {@code proactive} command line: one jar, one subcommand per job (docs/command-line.md).
  * Exit codes: 0 success, 1 mission failed, 2 bad input, 3 infrastructure failure.
  */
 @Command(name = "proactive",

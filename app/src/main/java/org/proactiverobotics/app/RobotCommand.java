@@ -30,7 +30,7 @@ import picocli.CommandLine.Spec;
  * {@code robot}: the simulated robot and its {@code ProactiveController} as a process of their
  * own (the Webots controller of the paper's deployment): seeds the mission rows, runs the
  * mission with an engine process through the shared database, writes report.json and exits
- * with the codes of DESIGN section 7.
+ * with the codes of docs/command-line.md.
  */
 @Command(name = "robot",
         mixinStandardHelpOptions = true,

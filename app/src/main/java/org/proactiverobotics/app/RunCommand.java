@@ -33,7 +33,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code run}: the headless mission in one process (DESIGN section 7): engine, robot controller
+ * {@code run}: the headless mission in one process (docs/command-line.md): engine, robot controller
  * and simulator in lockstep through a database, embedded H2 unless {@code --db} names another.
  * Writes report.json, trace.jsonl and trajectory.svg. Input is checked before anything is
  * written: a bad world or option leaves no output directory.

@@ -15,13 +15,13 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code validate --world FILE} (DESIGN section 7): checks a world file against the contract of DESIGN
- * section 6. Exit 0 with a one-line summary on standard output when valid; exit 2 with every problem, one
+ * {@code validate --world FILE} (docs/command-line.md): checks a world file against its format
+ * (docs/world-file.md). Exit 0 with a one-line summary on standard output when valid; exit 2 with every problem, one
  * per line, on standard error when not.
  */
 @Command(name = "validate",
         mixinStandardHelpOptions = true,
-        description = {"Checks a world file (DESIGN section 6) and lists every problem found.",
+        description = {"Checks a world file (its format: docs/world-file.md) and lists every problem found.",
                 "Exit codes: 0 valid, 2 invalid or unreadable (problems on standard error)."})
 public final class ValidateCommand implements Callable<Integer> {
 

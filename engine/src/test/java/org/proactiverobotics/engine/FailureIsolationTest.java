@@ -8,7 +8,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.api.Test;
 
-/** DESIGN section 2: a part that throws is recorded, the failed rule generates nothing, the iteration goes on. */
+/** docs/engine.md, failures: a part that throws is recorded, the failed rule generates nothing, the iteration goes on. */
 class FailureIsolationTest {
 
     private final Log log = new Log();

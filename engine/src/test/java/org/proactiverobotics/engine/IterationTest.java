@@ -9,7 +9,7 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
-/** DESIGN section 2, Iteration: the two FIFO queues, generation order, outside rules. */
+/** docs/engine.md, the two queues: the two FIFO queues, generation order, outside rules. */
 class IterationTest {
 
     private final Log log = new Log();

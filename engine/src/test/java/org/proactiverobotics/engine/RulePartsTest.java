@@ -4,7 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
 
-/** DESIGN section 2, Rule: the five parts, their order, the skipping, rules generation always running. */
+/** docs/engine.md, the five parts: the five parts, their order, the skipping, rules generation always running. */
 class RulePartsTest {
 
     private final Log log = new Log();

@@ -18,7 +18,7 @@ import java.util.jar.JarFile;
 import java.util.stream.Stream;
 
 /**
- * Loads and validates world files (DESIGN section 6): from disk, from a string, or bundled in the jar
+ * Loads and validates world files (docs/world-file.md): from disk, from a string, or bundled in the jar
  * (the project's {@code worlds/*.json}, packaged as resources under {@code worlds/}).
  * Every invalid input ends in a {@link WorldValidationException} listing all its problems.
  */

@@ -22,7 +22,7 @@ import com.google.gson.stream.JsonToken;
 
 /**
  * Reads a world file's JSON into a {@link WorldSpec}, collecting every problem rather than stopping at the
- * first (DESIGN section 6). One instance per file.
+ * first (docs/world-file.md). One instance per file.
  */
 final class WorldParser {
 

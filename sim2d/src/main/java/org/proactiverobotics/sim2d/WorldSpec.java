@@ -4,7 +4,7 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * A parsed and validated world file (DESIGN section 6), with every default applied.
+ * A parsed and validated world file (docs/world-file.md), with every default applied.
  * <p>
  * Units are those of the file: metres, seconds, degrees, percent. Obtain one from {@link WorldFiles};
  * the canonical constructors do not validate (tests and benchmarks build worlds directly).

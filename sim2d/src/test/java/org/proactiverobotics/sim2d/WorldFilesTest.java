@@ -15,8 +15,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 class WorldFilesTest {
 
-    /** The example of DESIGN section 6, verbatim. */
-    static final String DESIGN_EXAMPLE = """
+    /** A complete world file: every section present. */
+    static final String COMPLETE_EXAMPLE = """
             {
               "name": "reference-arena",
               "timeStepMs": 32,
@@ -53,7 +53,7 @@ class WorldFilesTest {
 
     @Test
     void parsesTheDesignExample() {
-        WorldSpec w = WorldFiles.parse(DESIGN_EXAMPLE);
+        WorldSpec w = WorldFiles.parse(COMPLETE_EXAMPLE);
         assertThat(w.name()).isEqualTo("reference-arena");
         assertThat(w.timeStepMs()).isEqualTo(32);
         assertThat(w.seed()).isEqualTo(1);
@@ -260,8 +260,8 @@ class WorldFilesTest {
     @Test
     void loadsFromDisk(@TempDir Path dir) throws Exception {
         Path file = dir.resolve("w.json");
-        Files.writeString(file, DESIGN_EXAMPLE);
-        assertThat(WorldFiles.load(file)).isEqualTo(WorldFiles.parse(DESIGN_EXAMPLE));
+        Files.writeString(file, COMPLETE_EXAMPLE);
+        assertThat(WorldFiles.load(file)).isEqualTo(WorldFiles.parse(COMPLETE_EXAMPLE));
     }
 
     // ---- bundled worlds ----

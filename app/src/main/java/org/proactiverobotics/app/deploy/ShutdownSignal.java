@@ -17,7 +17,7 @@ public final class ShutdownSignal {
     private final CountDownLatch done = new CountDownLatch(1);
     private volatile boolean stopRequested;
     private volatile boolean finished;
-    /** Until the command says otherwise, a stop that cannot finish in time is a failure (DESIGN section 7). */
+    /** Until the command says otherwise, a stop that cannot finish in time is a failure (docs/command-line.md, exit codes). */
     private volatile int exitCode = 1;
     private volatile Runnable onStop = () -> { };
 

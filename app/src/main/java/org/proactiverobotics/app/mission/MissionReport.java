@@ -7,7 +7,7 @@ import org.proactiverobotics.sim2d.GroundTruth;
 import org.proactiverobotics.sim2d.Simulation;
 
 /**
- * What report.json holds (DESIGN section 8): ground truth from the simulator, counts from both
+ * What report.json holds (docs/report.md): ground truth from the simulator, counts from both
  * sides, and where the time went. Field names are the file's keys.
  *
  * @param world              the world's name

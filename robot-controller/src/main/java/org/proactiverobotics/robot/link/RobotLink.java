@@ -4,7 +4,7 @@ import java.util.List;
 import java.util.Optional;
 
 /**
- * The robot side's one channel to the engine (DESIGN section 1): read the engine's requests and
+ * The robot side's one channel to the engine (docs/architecture.md): read the engine's requests and
  * commands, write readings and mission rows. The JDBC implementation is {@link JdbcRobotLink};
  * another communication layer (an in-process link, say) implements this same interface.
  *

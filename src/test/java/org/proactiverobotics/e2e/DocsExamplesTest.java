@@ -1,0 +1,136 @@
+package org.proactiverobotics.e2e;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.fail;
+
+import com.google.gson.JsonElement;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import com.google.gson.JsonStreamParser;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.proactiverobotics.sim2d.WorldFiles;
+import org.proactiverobotics.sim2d.WorldValidationException;
+
+/**
+ * Every {@code ```json} block of docs/*.md and README.md is checked against the real thing: a world file
+ * by the real parser, a report.json or a trace.jsonl line against the files a real mission writes. A block
+ * that is none of these fails, so the manual cannot carry unchecked JSON.
+ */
+class DocsExamplesTest extends CommandLineTest {
+
+    /** Precedes a world-file example that must be refused. */
+    static final String INVALID_WORLD = "<!-- invalid-world -->";
+    private static final Pattern JSON_BLOCK = Pattern.compile("(?m)^```json\\n(.*?)^```", Pattern.DOTALL);
+
+    private static JsonObject realReport;
+    private static JsonObject realTraceLine;
+
+    /** A short real mission, on the embedded database: the files every example is compared with. */
+    @BeforeAll
+    static void runAShortMission(@TempDir Path dir) throws IOException {
+        Path world = dir.resolve("short-hop.json");
+        Files.writeString(world, TwoProcessMissionTest.SHORT_HOP);
+        Path out = dir.resolve("out");
+        DocsExamplesTest cli = new DocsExamplesTest();
+        assertThat(cli.run("run", "--quiet", "--world", world.toString(), "--out", out.toString()))
+                .as(cli.err.toString()).isZero();
+        realReport = JsonParser.parseString(Files.readString(out.resolve("report.json"))).getAsJsonObject();
+        realTraceLine = JsonParser.parseString(Files.readAllLines(out.resolve("trace.jsonl")).get(0)).getAsJsonObject();
+    }
+
+    /** One JSON value of a block, where it was found and whether it is marked as a bad world. */
+    record Example(String where, JsonElement value, boolean markedInvalidWorld) {
+    }
+
+    static List<Example> examples() throws IOException {
+        Path root = Deployment.root();
+        List<Path> files = new ArrayList<>();
+        files.add(root.resolve("README.md"));
+        try (Stream<Path> docs = Files.list(root.resolve("docs"))) {
+            docs.filter(p -> p.toString().endsWith(".md")).sorted().forEach(files::add);
+        }
+        List<Example> examples = new ArrayList<>();
+        for (Path file : files) {
+            String text = Files.readString(file);
+            Matcher m = JSON_BLOCK.matcher(text);
+            while (m.find()) {
+                String where = root.relativize(file) + ":" + (text.substring(0, m.start()).split("\n", -1).length);
+                boolean invalid = text.substring(0, m.start()).stripTrailing().endsWith(INVALID_WORLD);
+                try {
+                    JsonStreamParser values = new JsonStreamParser(m.group(1));
+                    while (values.hasNext()) {
+                        examples.add(new Example(where, values.next(), invalid));
+                    }
+                } catch (RuntimeException e) {
+                    fail(where + ": a ```json block that is not JSON: " + e.getMessage());
+                }
+            }
+        }
+        return examples;
+    }
+
+    @Test
+    void everyJsonBlockOfTheDocsIsARecognisedAndCheckedExample() throws IOException {
+        List<Example> examples = examples();
+        assertThat(examples).as("the manual's JSON examples").hasSizeGreaterThanOrEqualTo(5);
+        int worlds = 0;
+        int invalidWorlds = 0;
+        int reports = 0;
+        int traceLines = 0;
+        for (Example e : examples) {
+            JsonObject o = e.value().isJsonObject() ? e.value().getAsJsonObject() : null;
+            if (e.markedInvalidWorld()) {
+                assertThatThrownBy(() -> WorldFiles.parse(e.value().toString(), e.where()))
+                        .as(e.where() + ": marked " + INVALID_WORLD + " but the parser accepts it")
+                        .isInstanceOf(WorldValidationException.class);
+                invalidWorlds++;
+            } else if (o != null && o.has("checkpoints") && o.has("arena")) {
+                try {
+                    WorldFiles.parse(o.toString(), e.where());
+                } catch (WorldValidationException ex) {
+                    fail(e.where() + ": a world example the parser refuses (mark it " + INVALID_WORLD
+                            + " if that is the point): " + ex.problems());
+                }
+                worlds++;
+            } else if (o != null && o.has("outcome") && o.has("checkpointsReached")) {
+                assertThat(o.keySet()).as(e.where() + ": report.json's keys").isEqualTo(realReport.keySet());
+                assertThat(o.getAsJsonObject("timing").keySet()).as(e.where() + ": report.json's timing keys")
+                        .isEqualTo(realReport.getAsJsonObject("timing").keySet());
+                reports++;
+            } else if (o != null && o.has("winner") && o.has("suggestions")) {
+                assertThat(o.keySet()).as(e.where() + ": trace.jsonl's keys").isEqualTo(realTraceLine.keySet());
+                traceLines++;
+            } else {
+                fail(e.where() + ": a JSON example that is neither a world file, a report.json nor a trace.jsonl"
+                        + " line, so nothing checks it: " + e.value());
+            }
+        }
+        assertThat(List.of(worlds, invalidWorlds, reports, traceLines)).as("each kind is shown at least once")
+                .doesNotContain(0);
+    }
+
+    @Test
+    void theRealReportHasTheFieldsTheManualDescribes() throws IOException {
+        String manual = Files.readString(Deployment.root().resolve("docs/report.md"));
+        for (String key : realReport.keySet()) {
+            assertThat(manual).as("docs/report.md describes report.json's " + key).contains("| `" + key + "` |");
+        }
+        for (String key : realReport.getAsJsonObject("timing").keySet()) {
+            assertThat(manual).as("docs/report.md describes timing's " + key).contains("| `" + key + "` |");
+        }
+        for (String key : realTraceLine.keySet()) {
+            assertThat(manual).as("docs/report.md describes trace.jsonl's " + key).contains("| `" + key + "` |");
+        }
+    }
+}
