@@ -71,7 +71,8 @@ class DeployCommandsTest extends CommandLineTest {
         assertThat(robot.waitFor(60, TimeUnit.SECONDS)).isTrue();
         String text = Files.readString(log);
         assertThat(robot.exitValue()).as(text).isEqualTo(3);
-        assertThat(text).contains("waiting for the database (attempt 1, retrying in 0.5 s)")
+        assertThat(text).contains("waiting for the database (attempt 1, retrying in 0.5 s, giving up after 2 s)")
+                .contains("cannot reach the database at 127.0.0.1:1").contains("is the server running?")
                 .contains("database not usable within 2 s").doesNotContain("Exception").doesNotContain("\tat ");
     }
 }

@@ -76,14 +76,6 @@ class RunCommandTest extends CommandLineTest {
     }
 
     @Test
-    void anUnreachableDatabaseIsAnInfrastructureFailureWithExitThree() {
-        Path outDir = tmp.resolve("out");
-        int code = run("run", "--db", "jdbc:mariadb://127.0.0.1:1/nowhere?connectTimeout=500", "--out", outDir.toString(), "--quiet");
-        assertThat(code).isEqualTo(3);
-        assertThat(err.toString()).contains("database failure").contains("127.0.0.1:1");
-    }
-
-    @Test
     void helpAndVersionExitZero() {
         assertThat(run("run", "--help")).isZero();
         assertThat(out.toString()).contains("--world").contains("--strategy").contains("safety-first").contains("--db");

@@ -6,6 +6,8 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
 import java.util.concurrent.Callable;
+import java.util.regex.Pattern;
+import org.proactiverobotics.app.deploy.DatabaseProblem;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.app.deploy.UsersScript;
@@ -41,11 +43,17 @@ public final class DbCommand implements Runnable {
 
     /** {@code db init}: applies schema.sql. */
     @Command(name = "init", mixinStandardHelpOptions = true,
-            description = "Creates every table of schema.sql that does not exist yet (harmless to repeat).")
+            description = {"Creates every table of schema.sql that does not exist yet (harmless to repeat).",
+                    "The URL's database must exist, or --create makes it."})
     static final class Init implements Callable<Integer> {
 
         @Mixin
         private DbOptions db;
+
+        @Option(names = "--create", description = "Create the URL's database first when it does not exist (MariaDB, MySQL:"
+                + " CREATE DATABASE IF NOT EXISTS, as a user who may). An H2 embedded or file database is created on"
+                + " first use anyway.")
+        private boolean create;
 
         @Spec
         private CommandSpec spec;
@@ -56,20 +64,43 @@ public final class DbCommand implements Runnable {
             if (db.problem() != null) {
                 return fail(err, db.problem(), Main.EXIT_BAD_INPUT);
             }
+            PrintWriter out = spec.commandLine().getOut();
+            if (create && db.server() != null && !DATABASE_NAME.matcher(String.valueOf(DbOptions.databaseIn(db.url()))).matches()) {
+                return fail(err, "--create needs a database name of letters, digits, '_' or '$' in --db: " + db.url(),
+                        Main.EXIT_BAD_INPUT);
+            }
             try {
-                DatabaseWait.await(db, null, () -> false);
+                awaitOrCreate(out);
                 try (var pool = Databases.pool(db.url(), db.user(), db.password())) {
                     Schema.apply(pool);
                 }
             } catch (DatabaseWait.Unreachable e) {
                 return fail(err, e.getMessage(), Main.EXIT_INFRASTRUCTURE);
             } catch (SQLException e) {
-                return fail(err, e.getMessage(), Main.EXIT_INFRASTRUCTURE);
+                return fail(err, DatabaseProblem.of(e, db.url(), null).message(), Main.EXIT_INFRASTRUCTURE);
             }
-            PrintWriter out = spec.commandLine().getOut();
             out.println("schema.sql applied: " + Schema.tableNames().size() + " tables");
             out.flush();
             return 0;
+        }
+
+        /** Waits for the database; with --create, makes it when the server says it does not exist. */
+        private void awaitOrCreate(PrintWriter out) throws DatabaseWait.Unreachable, SQLException {
+            try {
+                DatabaseWait.await(db, null, () -> false);
+                return;
+            } catch (DatabaseWait.Unreachable e) {
+                DbOptions server = db.server();
+                if (!create || server == null || e.problem().cause() != DatabaseProblem.Cause.UNKNOWN_DATABASE) {
+                    throw e;
+                }
+            }
+            String name = DbOptions.databaseIn(db.url());
+            try (Connection c = db.server().connect(); Statement s = c.createStatement()) {
+                s.execute("CREATE DATABASE IF NOT EXISTS `" + name + "`");
+            }
+            out.println("database " + name + " created");
+            DatabaseWait.await(db, null, () -> false);
         }
     }
 
@@ -151,7 +182,8 @@ public final class DbCommand implements Runnable {
                 out.flush();
                 return 0;
             } catch (SQLException e) {
-                return fail(err, "creating the users failed: " + e.getMessage(), Main.EXIT_INFRASTRUCTURE);
+                return fail(err, "creating the users failed: " + DatabaseProblem.of(e, db.url(), null).message(),
+                        Main.EXIT_INFRASTRUCTURE);
             }
         }
 
@@ -170,6 +202,9 @@ public final class DbCommand implements Runnable {
             return q < 0 ? rest : rest.substring(0, q);
         }
     }
+
+    /** A database name that needs no quoting beyond backticks (MariaDB and MySQL identifiers). */
+    private static final Pattern DATABASE_NAME = Pattern.compile("[A-Za-z0-9_$]{1,64}");
 
     private static int fail(PrintWriter err, String message, int code) {
         err.println(message);

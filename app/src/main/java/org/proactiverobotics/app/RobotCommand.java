@@ -2,7 +2,6 @@ package org.proactiverobotics.app;
 
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
@@ -10,6 +9,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
+import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.deploy.ProcessOptions;
 import org.proactiverobotics.app.deploy.RobotProcess;
 import org.proactiverobotics.app.deploy.StoredMission;
@@ -88,8 +88,9 @@ public final class RobotCommand implements Callable<Integer> {
         }
         Path outDir = out != null ? out : Path.of("runs", worldSpec.name() + "-"
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        OutputDirectory output;
         try {
-            Files.createDirectories(outDir);
+            output = OutputDirectory.create(outDir);
         } catch (IOException e) {
             err.println("cannot create the output directory " + outDir + ": " + e.getMessage());
             err.flush();
@@ -99,14 +100,15 @@ public final class RobotCommand implements Callable<Integer> {
         ShutdownSignal signal = ShutdownSignal.install();
         int code = Main.EXIT_INFRASTRUCTURE; // what an unexpected exception ends with
         try {
-            code = runMission(worldSpec, outDir, signal, stdout, err);
+            code = runMission(worldSpec, output, signal, stdout, err);
         } finally {
             signal.finished(code);
         }
         return code;
     }
 
-    private int runMission(WorldSpec worldSpec, Path outDir, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
+    private int runMission(WorldSpec worldSpec, OutputDirectory output, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
+        Path outDir = output.path();
         Lockstep.Timing mode = Lockstep.Timing.valueOf(timing.toUpperCase(Locale.ROOT));
         stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), db.url(), mode.label());
         stdout.flush();
@@ -115,10 +117,12 @@ public final class RobotCommand implements Callable<Integer> {
             report = new RobotProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor, process.logEvery(),
                     process.heartbeat()), signal).run();
         } catch (DatabaseWait.Unreachable e) {
+            output.removeIfEmpty();
             err.println(e.getMessage());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         } catch (StoredMission.Mismatch e) {
+            output.removeIfEmpty();
             err.println(e.getMessage());
             err.flush();
             return Main.EXIT_BAD_INPUT;

@@ -15,6 +15,10 @@ import java.time.format.DateTimeFormatter;
 import java.util.Iterator;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.proactiverobotics.app.deploy.DatabaseProblem;
+import org.proactiverobotics.app.deploy.DatabaseWait;
+import org.proactiverobotics.app.deploy.DbOptions;
+import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
@@ -62,8 +66,15 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--db-user", paramLabel = "U", description = "Database user.")
     private String dbUser;
 
-    @Option(names = "--db-password", paramLabel = "P", description = "Database password.")
+    @Option(names = "--db-password", paramLabel = "P", defaultValue = "${env:" + DbOptions.PASSWORD_VARIABLE + "}",
+            description = "Database password. Default: the environment variable " + DbOptions.PASSWORD_VARIABLE + ".")
     private String dbPassword;
+
+    @Option(names = "--wait-s", paramLabel = "S", defaultValue = "60",
+            description = "With --db: how long to wait for a database server that is not up yet (connection refused,"
+                    + " unknown host) before giving up (exit 3); access denied and an unknown database fail at once."
+                    + " Default: ${DEFAULT-VALUE} s.")
+    private int waitS;
 
     @Mixin
     private ScenarioOptions scenarios;
@@ -110,6 +121,11 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
+        if (waitS < 0) {
+            err.println("--wait-s must be >= 0: " + waitS);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
         if (db != null && !supportedJdbcUrl(db)) {
             err.println("--db must be a JDBC URL this program has a driver for (jdbc:h2:..., jdbc:mariadb://...,"
                     + " jdbc:mysql://...): " + db);
@@ -132,12 +148,23 @@ public final class RunCommand implements Callable<Integer> {
         String url = db != null ? db : Databases.embeddedH2Url("proactive_run_" + System.nanoTime());
         MissionOptions options = new MissionOptions(spec, url, db != null ? dbUser : "sa", db != null ? dbPassword : "",
                 Strategy.SAFETY_FIRST, robotId).withLink(layer).withScenarios(choice.plugins(), choice.strategy());
+        OutputDirectory output;
         try {
-            Files.createDirectories(outDir);
+            output = OutputDirectory.create(outDir);
         } catch (IOException e) {
             err.println("cannot create the output directory " + outDir + ": " + e.getMessage());
             err.flush();
             return Main.EXIT_BAD_INPUT;
+        }
+        if (db != null) {
+            try {
+                DatabaseWait.await(DbOptions.of(db, dbUser, dbPassword, waitS), null, () -> false);
+            } catch (DatabaseWait.Unreachable e) {
+                output.removeIfEmpty();
+                err.println(e.getMessage());
+                err.flush();
+                return Main.EXIT_INFRASTRUCTURE;
+            }
         }
         boolean live = !quiet && System.console() != null;
         if (choice.unlistedWarning() != null) {
@@ -162,7 +189,8 @@ public final class RunCommand implements Callable<Integer> {
             }
             writeReport(report, outDir.resolve("report.json"));
         } catch (SQLException e) {
-            err.println("database failure (" + url + "): " + e.getMessage());
+            output.removeIfEmpty();
+            err.println(DatabaseProblem.of(e, url, null).message());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         } catch (IOException e) {
@@ -170,7 +198,8 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         } catch (RuntimeException e) { // the database failing mid-mission (engine state, tables)
-            err.println("mission aborted (" + url + "): " + e.getMessage());
+            output.removeIfEmpty();
+            err.println("mission aborted: " + (hasSqlCause(e) ? DatabaseProblem.of(e, url, null).message() : e.getMessage()));
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }
@@ -182,6 +211,15 @@ public final class RunCommand implements Callable<Integer> {
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;
+    }
+
+    private static boolean hasSqlCause(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause() == t ? null : t.getCause()) {
+            if (t instanceof SQLException) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** Whether a JDBC driver on the class path accepts the URL (checked before anything is written). */

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import org.proactiverobotics.app.deploy.DatabaseProblem;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.db.Databases;
@@ -113,7 +114,7 @@ public final class StrategyCommand implements Callable<Integer> {
             out.flush();
             return 0;
         } catch (RuntimeException e) {
-            err.println("database failure (" + db.url() + "): " + e.getMessage());
+            err.println(DatabaseProblem.of(e, db.url(), "strategy").message());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }

@@ -1,5 +1,11 @@
 package org.proactiverobotics.app.deploy;
 
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.SQLException;
+import java.util.Properties;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import picocli.CommandLine.Option;
 
 /**
@@ -10,6 +16,9 @@ public final class DbOptions {
 
     /** The environment variable a password defaults to. */
     public static final String PASSWORD_VARIABLE = "PROACTIVE_DB_PASSWORD";
+
+    /** A MariaDB or MySQL URL: the server part, the database name, the parameters. */
+    private static final Pattern SERVER_URL = Pattern.compile("(jdbc:(?:mariadb|mysql)://[^/?]+)(?:/([^?]*))?(\\?.*)?");
 
     @Option(names = "--db", paramLabel = "JDBC_URL", required = true,
             description = "The shared database, e.g. jdbc:mysql://mysql:3306/proactive or jdbc:mariadb://127.0.0.1:3306/proactive.")
@@ -23,8 +32,66 @@ public final class DbOptions {
     String password;
 
     @Option(names = "--wait-s", paramLabel = "S", defaultValue = "60",
-            description = "How long to wait for the database before giving up (exit 3). Default: ${DEFAULT-VALUE} s.")
+            description = "How long to wait for a database server that is not up yet (connection refused, unknown host,"
+                    + " schema missing) before giving up (exit 3); access denied and an unknown database fail at once."
+                    + " Default: ${DEFAULT-VALUE} s.")
     int waitS;
+
+    /**
+     * Options built in code (for {@code run}, whose --db is optional).
+     *
+     * @param url      the JDBC URL
+     * @param user     the user, or null
+     * @param password the password, or null
+     * @param waitS    how long to wait, seconds
+     * @return the options
+     */
+    public static DbOptions of(String url, String user, String password, int waitS) {
+        DbOptions options = new DbOptions();
+        options.url = url;
+        options.user = user;
+        options.password = password;
+        options.waitS = waitS;
+        return options;
+    }
+
+    /** @return the same options for the URL's server without its database (MariaDB, MySQL), or null for another URL */
+    public DbOptions server() {
+        Matcher m = SERVER_URL.matcher(url);
+        if (!m.matches()) {
+            return null;
+        }
+        return of(m.group(1) + "/" + (m.group(3) == null ? "" : m.group(3)), user, password, waitS);
+    }
+
+    /**
+     * @param url a JDBC URL
+     * @return the database a jdbc:mariadb:// or jdbc:mysql:// URL names, or null when it names none or is another kind
+     */
+    public static String databaseIn(String url) {
+        Matcher m = url == null ? null : SERVER_URL.matcher(url);
+        return m == null || !m.matches() || m.group(2) == null || m.group(2).isEmpty() ? null : m.group(2);
+    }
+
+    /**
+     * Opens one connection, outside any pool (for the wait and for one-off statements).
+     *
+     * @return a connection; close it
+     * @throws SQLException as the driver reports it
+     */
+    public Connection connect() throws SQLException {
+        Properties props = new Properties();
+        if (user != null) {
+            props.setProperty("user", user);
+        }
+        if (password != null) {
+            props.setProperty("password", password);
+        }
+        if (url.startsWith("jdbc:mariadb:") || url.startsWith("jdbc:mysql:")) {
+            props.setProperty("connectTimeout", "5000"); // ms, both drivers: an unreachable host must not hang an attempt
+        }
+        return DriverManager.getConnection(url, props);
+    }
 
     /** @return the JDBC URL */
     public String url() {
