@@ -17,9 +17,7 @@ import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.robot.Lockstep;
-import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
-import org.proactiverobotics.sim2d.WorldValidationException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -41,8 +39,10 @@ import picocli.CommandLine.Spec;
                 "Exit codes: 0 mission accomplished, 1 mission failed or stopped, 2 bad input, 3 database not usable within --wait-s."})
 public final class RobotCommand implements Callable<Integer> {
 
-    @Option(names = "--world", paramLabel = "FILE", required = true, description = "The world file (JSON).")
-    private Path world;
+    @Option(names = "--world", paramLabel = "FILE|NAME", required = true,
+            completionCandidates = WorldArgument.BundledNames.class,
+            description = "The world: a JSON file, or the name of a bundled world (${COMPLETION-CANDIDATES}).")
+    private String world;
 
     @Mixin
     private DbOptions db;
@@ -71,13 +71,8 @@ public final class RobotCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
-        WorldSpec worldSpec;
-        try {
-            worldSpec = WorldFiles.load(world);
-        } catch (WorldValidationException e) {
-            err.println(world + ": invalid world file:");
-            e.problems().forEach(err::println);
-            err.flush();
+        WorldSpec worldSpec = WorldArgument.load(world, err);
+        if (worldSpec == null) {
             return Main.EXIT_BAD_INPUT;
         }
         String problem = problem();

@@ -25,7 +25,6 @@ import org.proactiverobotics.sim2d.GroundTruth;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
-import org.proactiverobotics.sim2d.WorldValidationException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -44,11 +43,10 @@ import picocli.CommandLine.Spec;
                 "Exit codes: 0 mission accomplished, 1 mission failed, 2 bad input, 3 infrastructure failure."})
 public final class RunCommand implements Callable<Integer> {
 
-    static final String DEFAULT_WORLD = "reference-arena";
-
-    @Option(names = "--world", paramLabel = "FILE",
-            description = "The world file (JSON). Default: the bundled " + DEFAULT_WORLD + ".")
-    private Path world;
+    @Option(names = "--world", paramLabel = "FILE|NAME", completionCandidates = WorldArgument.BundledNames.class,
+            description = "The world: a JSON file, or the name of a bundled world (${COMPLETION-CANDIDATES}; see the"
+                    + " worlds command). Default: " + WorldFiles.DEFAULT_WORLD + ".")
+    private String world;
 
     @Option(names = "--out", paramLabel = "DIR",
             description = "Output directory. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
@@ -89,13 +87,8 @@ public final class RunCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
-        WorldSpec spec;
-        try {
-            spec = world == null ? WorldFiles.bundled(DEFAULT_WORLD) : WorldFiles.load(world);
-        } catch (WorldValidationException e) {
-            err.println((world == null ? DEFAULT_WORLD : world) + ": invalid world file:");
-            e.problems().forEach(err::println);
-            err.flush();
+        WorldSpec spec = WorldArgument.load(world, err);
+        if (spec == null) {
             return Main.EXIT_BAD_INPUT;
         }
         if (robotId < 0) {
