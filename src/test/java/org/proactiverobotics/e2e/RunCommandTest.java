@@ -25,6 +25,8 @@ class RunCommandTest extends CommandLineTest {
         assertThat(report.keySet()).contains("world", "success", "outcome", "checkpointsReached", "checkpointsTotal",
                 "simTimeS", "wallTimeS", "controlSteps", "engineIterations", "distanceM", "collisions", "minBattery",
                 "recharges", "commandWins");
+        assertThat(report.get("strategy").getAsString()).isEqualTo("safety-first");
+        assertThat(report.get("ruleFailures").getAsLong()).isZero();
         assertThat(report.get("world").getAsString()).isEqualTo("reference-arena");
         assertThat(report.get("success").getAsBoolean()).isTrue();
         assertThat(report.getAsJsonObject("commandWins").keySet()).contains("ReachDestination", "ObstacleAvoidance");
