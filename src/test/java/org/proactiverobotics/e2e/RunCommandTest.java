@@ -86,6 +86,13 @@ class RunCommandTest extends CommandLineTest {
     }
 
     @Test
+    void theSummarySaysOneRechargeInTheSingular() {
+        assertThat(run("run", "--world", "low-battery", "--link", "direct", "--quiet", "--out", tmp.resolve("low").toString()))
+                .as(err.toString()).isZero();
+        assertThat(out.toString()).contains(", 0 collisions, ").contains(", 1 recharge\n").doesNotContain("1 recharges");
+    }
+
+    @Test
     void helpAndVersionExitZero() {
         assertThat(run("run", "--help")).isZero();
         assertThat(out.toString()).contains("--world").contains("--strategy").contains("safety-first").contains("--db");

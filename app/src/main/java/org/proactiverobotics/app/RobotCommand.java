@@ -125,11 +125,12 @@ public final class RobotCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }
-        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s, %d steps, %d engine iterations, "
-                        + "%.1f m, %d collisions, battery min %.1f %%, %d recharges%n",
+        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s, %s, %s, "
+                        + "%.1f m, %s, battery min %.1f %%, %s%n",
                 report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(), report.simTimeS(),
-                report.wallTimeS(), report.controlSteps(), report.engineIterations(), report.distanceM(),
-                report.collisions(), report.minBattery(), report.recharges());
+                report.wallTimeS(), Plural.of(report.controlSteps(), "step"), Plural.of(report.engineIterations(), "engine iteration"),
+                report.distanceM(), Plural.of(report.collisions(), "collision"), report.minBattery(),
+                Plural.of(report.recharges(), "recharge"));
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;

@@ -160,10 +160,10 @@ public final class RunCommand implements Callable<Integer> {
             return Main.EXIT_INFRASTRUCTURE;
         }
         stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.0fx real time)%n"
-                        + "  %.1f m travelled, %d collisions, battery min %.1f %%, %d recharges%n",
+                        + "  %.1f m travelled, %s, battery min %.1f %%, %s%n",
                 report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(),
                 report.simTimeS(), report.wallTimeS(), report.realTimeFactor(), report.distanceM(),
-                report.collisions(), report.minBattery(), report.recharges());
+                Plural.of(report.collisions(), "collision"), report.minBattery(), Plural.of(report.recharges(), "recharge"));
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;

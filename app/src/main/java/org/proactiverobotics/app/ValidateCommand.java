@@ -44,10 +44,8 @@ public final class ValidateCommand implements Callable<Integer> {
 
     /** @return e.g. {@code reference-arena: valid (3 obstacles, 4 checkpoints, arena radius 5.0 m)} */
     static String summary(WorldSpec w) {
-        int obstacles = w.obstacles().size();
-        int checkpoints = w.checkpoints().size();
-        return String.format(Locale.ROOT, "%s: valid (%d %s, %d %s, arena radius %s m)", w.name(),
-                obstacles, obstacles == 1 ? "obstacle" : "obstacles",
-                checkpoints, checkpoints == 1 ? "checkpoint" : "checkpoints", w.arena().radiusM());
+        return String.format(Locale.ROOT, "%s: valid (%s, %s, arena radius %s m)", w.name(),
+                Plural.of(w.obstacles().size(), "obstacle"), Plural.of(w.checkpoints().size(), "checkpoint"),
+                w.arena().radiusM());
     }
 }
