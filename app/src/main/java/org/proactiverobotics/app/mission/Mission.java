@@ -203,7 +203,7 @@ public final class Mission {
                 .colour("ReachDestination", "#1f77b4")
                 .colour("ObstacleAvoidance", "#d62728")
                 .colour("BatteryMonitor", "#2ca02c")
-                .colour("DecisionMaking", "#7f7f7f")
+                .colour("DecisionMaking", "#9467bd")
                 .colour("FailSafe", "#ff7f0e")
                 .colour("none", "#7f7f7f")
                 .title(world.name() + " — path coloured by the scenario whose command was driving");
