@@ -61,6 +61,19 @@ class DeployCommandsTest extends CommandLineTest {
     }
 
     @Test
+    void dbUsersPrintShowsThePasswordsOnlyInTheStatementsThatSetThem() {
+        assertThat(run("db", "users", "--db", "jdbc:mysql://mysql:3306/proactive", "--print",
+                "--engine-password", "engine-Secret-1", "--robot-password", "robot-Secret-2")).isZero();
+        List<String> lines = out.toString().lines().toList();
+        assertThat(lines.get(0)).startsWith("-- ").contains("proactive_engine").contains("`proactive`");
+        assertThat(lines).filteredOn(l -> l.contains("engine-Secret-1")).hasSize(2)
+                .allSatisfy(l -> assertThat(l).matches("(CREATE|ALTER) USER .*'proactive_engine'.*"));
+        assertThat(lines).filteredOn(l -> l.contains("robot-Secret-2")).hasSize(2)
+                .allSatisfy(l -> assertThat(l).matches("(CREATE|ALTER) USER .*'proactive_robot'.*"));
+        assertThat(lines).filteredOn(l -> l.startsWith("--")).noneSatisfy(l -> assertThat(l).containsAnyOf("Secret", "@"));
+    }
+
+    @Test
     void anUnreachableDatabaseIsWaitedForWithStatusLinesThenExitsThree() throws Exception {
         Path log = tmp.resolve("robot.log");
         Process robot = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",

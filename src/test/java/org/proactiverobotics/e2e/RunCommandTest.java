@@ -25,6 +25,8 @@ class RunCommandTest extends CommandLineTest {
         assertThat(report.keySet()).contains("world", "success", "outcome", "checkpointsReached", "checkpointsTotal",
                 "simTimeS", "wallTimeS", "controlSteps", "engineIterations", "distanceM", "collisions", "minBattery",
                 "recharges", "commandWins");
+        assertThat(report.get("strategy").getAsString()).isEqualTo("safety-first");
+        assertThat(report.get("ruleFailures").getAsLong()).isZero();
         assertThat(report.get("world").getAsString()).isEqualTo("reference-arena");
         assertThat(report.get("success").getAsBoolean()).isTrue();
         assertThat(report.getAsJsonObject("commandWins").keySet()).contains("ReachDestination", "ObstacleAvoidance");
@@ -73,6 +75,13 @@ class RunCommandTest extends CommandLineTest {
         assertThat(run("run", "--db", "jdbc:nosuchdb://somewhere/x", "--out", outDir.toString())).isEqualTo(2);
         assertThat(err.toString()).contains("jdbc:nosuchdb://somewhere/x").doesNotContain("Exception");
         assertThat(outDir).doesNotExist();
+    }
+
+    @Test
+    void theSummarySaysOneRechargeInTheSingular() {
+        assertThat(run("run", "--world", "low-battery", "--link", "direct", "--quiet", "--out", tmp.resolve("low").toString()))
+                .as(err.toString()).isZero();
+        assertThat(out.toString()).contains(", 0 collisions, ").contains(", 1 recharge\n").doesNotContain("1 recharges");
     }
 
     @Test

@@ -70,6 +70,9 @@ class TwoProcessMissionTest {
         JsonObject report = JsonParser.parseString(Files.readString(tmp.resolve("out/report.json"))).getAsJsonObject();
         assertSameGroundTruth(report, Missions.onH2("reference-arena").report());
         assertThat(report.get("database").getAsString()).isEqualTo("mysql");
+        // the robot's user may read neither the strategy nor rule_failures: left out, not made up (it was -1)
+        assertThat(report.has("strategy")).isFalse();
+        assertThat(report.has("ruleFailures")).isFalse();
         assertThat(Files.readString(robotLog)).contains("the engine acknowledged run").contains("robot 1: step 500,")
                 .doesNotContain("Exception");
         assertThat(tmp.resolve("robot.beat")).exists();

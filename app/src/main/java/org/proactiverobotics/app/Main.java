@@ -15,6 +15,7 @@ import picocli.CommandLine.Command;
                 CommandLine.HelpCommand.class,
                 ValidateCommand.class,
                 RunCommand.class,
+                WorldsCommand.class,
                 EngineCommand.class,
                 RobotCommand.class,
                 StrategyCommand.class,
@@ -39,8 +40,19 @@ public final class Main implements Runnable {
     /** @return the configured command line, for main and for tests */
     public static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new Main());
+        giveEverySubcommandTheVersion(cl);
         cl.setExitCodeExceptionMapper(e -> e instanceof CommandLine.ParameterException ? EXIT_BAD_INPUT : EXIT_INFRASTRUCTURE);
         return cl;
+    }
+
+    /** Every subcommand offers -V/--version (mixinStandardHelpOptions): without a provider it would print nothing. */
+    private static void giveEverySubcommandTheVersion(CommandLine cl) {
+        for (CommandLine sub : cl.getSubcommands().values()) {
+            if (sub.getCommandSpec().versionProvider() == null) {
+                sub.getCommandSpec().versionProvider(new Version());
+            }
+            giveEverySubcommandTheVersion(sub);
+        }
     }
 
     @Override

@@ -17,9 +17,7 @@ import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.robot.Lockstep;
-import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
-import org.proactiverobotics.sim2d.WorldValidationException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -41,8 +39,10 @@ import picocli.CommandLine.Spec;
                 "Exit codes: 0 mission accomplished, 1 mission failed or stopped, 2 bad input, 3 database not usable within --wait-s."})
 public final class RobotCommand implements Callable<Integer> {
 
-    @Option(names = "--world", paramLabel = "FILE", required = true, description = "The world file (JSON).")
-    private Path world;
+    @Option(names = "--world", paramLabel = "FILE|NAME", required = true,
+            completionCandidates = WorldArgument.BundledNames.class,
+            description = "The world: a JSON file, or the name of a bundled world (${COMPLETION-CANDIDATES}).")
+    private String world;
 
     @Mixin
     private DbOptions db;
@@ -71,13 +71,8 @@ public final class RobotCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
-        WorldSpec worldSpec;
-        try {
-            worldSpec = WorldFiles.load(world);
-        } catch (WorldValidationException e) {
-            err.println(world + ": invalid world file:");
-            e.problems().forEach(err::println);
-            err.flush();
+        WorldSpec worldSpec = WorldArgument.load(world, err);
+        if (worldSpec == null) {
             return Main.EXIT_BAD_INPUT;
         }
         String problem = problem();
@@ -134,11 +129,12 @@ public final class RobotCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }
-        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s, %d steps, %d engine iterations, "
-                        + "%.1f m, %d collisions, battery min %.1f %%, %d recharges%n",
+        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s, %s, %s, "
+                        + "%.1f m, %s, battery min %.1f %%, %s%n",
                 report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(), report.simTimeS(),
-                report.wallTimeS(), report.controlSteps(), report.engineIterations(), report.distanceM(),
-                report.collisions(), report.minBattery(), report.recharges());
+                report.wallTimeS(), Plural.of(report.controlSteps(), "step"), Plural.of(report.engineIterations(), "engine iteration"),
+                report.distanceM(), Plural.of(report.collisions(), "collision"), report.minBattery(),
+                Plural.of(report.recharges(), "recharge"));
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;

@@ -29,7 +29,6 @@ import org.proactiverobotics.sim2d.GroundTruth;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
-import org.proactiverobotics.sim2d.WorldValidationException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -49,11 +48,10 @@ import picocli.CommandLine.Spec;
                 "Exit codes: 0 mission accomplished, 1 mission failed, 2 bad input, 3 infrastructure failure."})
 public final class RunCommand implements Callable<Integer> {
 
-    static final String DEFAULT_WORLD = "reference-arena";
-
-    @Option(names = "--world", paramLabel = "FILE",
-            description = "The world file (JSON). Default: the bundled " + DEFAULT_WORLD + ".")
-    private Path world;
+    @Option(names = "--world", paramLabel = "FILE|NAME", completionCandidates = WorldArgument.BundledNames.class,
+            description = "The world: a JSON file, or the name of a bundled world (${COMPLETION-CANDIDATES}; see the"
+                    + " worlds command). Default: " + WorldFiles.DEFAULT_WORLD + ".")
+    private String world;
 
     @Option(names = "--out", paramLabel = "DIR",
             description = "Output directory. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
@@ -99,13 +97,8 @@ public final class RunCommand implements Callable<Integer> {
     public Integer call() {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter stdout = spec.commandLine().getOut();
-        WorldSpec spec;
-        try {
-            spec = world == null ? WorldFiles.bundled(DEFAULT_WORLD) : WorldFiles.load(world);
-        } catch (WorldValidationException e) {
-            err.println((world == null ? DEFAULT_WORLD : world) + ": invalid world file:");
-            e.problems().forEach(err::println);
-            err.flush();
+        WorldSpec spec = WorldArgument.load(world, err);
+        if (spec == null) {
             return Main.EXIT_BAD_INPUT;
         }
         if (robotId < 0) {
@@ -204,10 +197,10 @@ public final class RunCommand implements Callable<Integer> {
             return Main.EXIT_INFRASTRUCTURE;
         }
         stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.0fx real time)%n"
-                        + "  %.1f m travelled, %d collisions, battery min %.1f %%, %d recharges%n",
+                        + "  %.1f m travelled, %s, battery min %.1f %%, %s%n",
                 report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(),
                 report.simTimeS(), report.wallTimeS(), report.realTimeFactor(), report.distanceM(),
-                report.collisions(), report.minBattery(), report.recharges());
+                Plural.of(report.collisions(), "collision"), report.minBattery(), Plural.of(report.recharges(), "recharge"));
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;

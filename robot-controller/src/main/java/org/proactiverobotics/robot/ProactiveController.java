@@ -42,6 +42,10 @@ public class ProactiveController extends RobotSuperclass {
 
     private static final Logger LOG = LoggerFactory.getLogger(ProactiveController.class);
 
+    /** A RECHARGE refused away from the station is said at most once per this much simulated time, ms. */
+    static final long REFUSAL_WARN_INTERVAL_MS = 10_000;
+    private static final long NEVER = Long.MIN_VALUE;
+
     private final int robotId;
     private final Watchdog watchdog;
     private final Set<String> unknownSensorsLogged = new HashSet<>();
@@ -52,7 +56,8 @@ public class ProactiveController extends RobotSuperclass {
     private long lastStaleCommandLogged = -1;
     private long lastUnknownRequestCounted = -1;
     private boolean watchdogStopped;
-    private boolean rechargeRefusalLogged;
+    private long lastRefusalWarnMs = NEVER;
+    private long refusalsSinceWarn;
     private boolean seeded;
     private boolean startBatteryWritten;
     private long senseCalls;
@@ -248,9 +253,6 @@ public class ProactiveController extends RobotSuperclass {
         if (previous == Mode.RECHARGE && command.mode() != Mode.RECHARGE) {
             robot.battery().stopCharging();
         }
-        if (command.mode() != Mode.RECHARGE) {
-            rechargeRefusalLogged = false;
-        }
         mode = command.mode();
         current = command;
         if (mode == Mode.RECHARGE) {
@@ -261,7 +263,11 @@ public class ProactiveController extends RobotSuperclass {
         }
     }
 
-    /** Starts charging when at the station and not charging yet; says once why not otherwise. */
+    /**
+     * Starts charging when at the station and not charging yet. At the station and already charged is normal:
+     * the engine reads the battery level only every few steps, so a RECHARGE or two still come once it is full.
+     * Away from the station the command is refused: a WARN, at most once per {@link #REFUSAL_WARN_INTERVAL_MS}.
+     */
     private void recharge() {
         var battery = robot.battery();
         if (battery.isCharging()) {
@@ -269,11 +275,18 @@ public class ProactiveController extends RobotSuperclass {
         }
         if (battery.startCharging()) {
             LOG.info("robot {}: charging from {}%", robotId, String.format("%.1f", battery.getLevelPct()));
-            rechargeRefusalLogged = false;
-        } else if (!rechargeRefusalLogged) {
-            rechargeRefusalLogged = true;
-            LOG.warn("robot {}: RECHARGE but not charging ({}); standing still", robotId,
-                    battery.isAtStation() ? "already at the recharge level" : "not at the recharge station");
+        } else if (battery.isAtStation()) {
+            LOG.debug("robot {}: RECHARGE at {}%, already at the recharge level", robotId,
+                    String.format("%.1f", battery.getLevelPct()));
+        } else {
+            refusalsSinceWarn++;
+            long now = simTimeMs();
+            if (lastRefusalWarnMs == NEVER || now - lastRefusalWarnMs >= REFUSAL_WARN_INTERVAL_MS) {
+                LOG.warn("robot {}: RECHARGE refused: not at the recharge station; standing still"
+                        + " ({} refused RECHARGE command(s) since the last warning)", robotId, refusalsSinceWarn);
+                lastRefusalWarnMs = now;
+                refusalsSinceWarn = 0;
+            }
         }
     }
 

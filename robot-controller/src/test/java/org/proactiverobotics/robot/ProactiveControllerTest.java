@@ -3,7 +3,12 @@ package org.proactiverobotics.robot;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import ch.qos.logback.classic.Level;
+import ch.qos.logback.classic.Logger;
+import ch.qos.logback.classic.spi.ILoggingEvent;
+import ch.qos.logback.core.read.ListAppender;
 import java.util.List;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
@@ -15,6 +20,7 @@ import org.proactiverobotics.sim2d.DistanceSensor;
 import org.proactiverobotics.sim2d.SimRobot;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldSpec;
+import org.slf4j.LoggerFactory;
 
 class ProactiveControllerTest {
 
@@ -245,6 +251,51 @@ class ProactiveControllerTest {
                 robot.controlStep();
                 assertThat(there.robot().battery().isCharging()).isFalse();
             }
+        }
+    }
+
+    @Test
+    void aNormalRechargeIsSilentAndARefusedOneWarnsAtMostEveryTenSeconds() throws Exception {
+        Logger log = (Logger) LoggerFactory.getLogger(ProactiveController.class);
+        ListAppender<ILoggingEvent> seen = new ListAppender<>();
+        seen.start();
+        Level level = log.getLevel();
+        log.setLevel(Level.WARN);
+        log.addAppender(seen);
+        log.setAdditive(false); // seen here, not on the console
+        try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
+            FakeEngine engine = new FakeEngine(db.dataSource(), ROBOT);
+            // at the station: charges to rechargeTo, then RECHARGE keeps coming (the engine learns it is full later)
+            Simulation there = new Simulation(TestWorlds.atStation());
+            try (ProactiveController robot = controller(db, there, CONFIG)) {
+                for (int i = 0; i < 100; i++) {
+                    engine.command("RECHARGE");
+                    robot.controlStep();
+                    there.step();
+                }
+                assertThat(there.robot().battery().getLevelPct()).isEqualTo(95.0);
+                assertThat(there.robot().battery().isCharging()).isFalse();
+            }
+            assertThat(seen.list).as("a normal recharge").isEmpty();
+
+            // away from the station, RECHARGE every step for 25 s: refused, said at 0, 10 and 20 s
+            Simulation away = new Simulation(TestWorlds.arena());
+            try (ProactiveController robot = controller(db, away, CONFIG)) {
+                while (away.simTimeMs() < 25_000) {
+                    engine.command("RECHARGE");
+                    robot.controlStep();
+                    away.step();
+                }
+            }
+            assertThat(seen.list).hasSize(3).allSatisfy(e -> {
+                assertThat(e.getLevel()).isEqualTo(Level.WARN);
+                assertThat(e.getFormattedMessage()).contains("RECHARGE refused: not at the recharge station");
+            });
+            assertThat(seen.list.get(1).getFormattedMessage()).contains("(313 refused");
+        } finally {
+            log.detachAppender(seen);
+            log.setAdditive(true);
+            log.setLevel(level);
         }
     }
 

@@ -12,9 +12,10 @@ import java.util.Map;
 import java.util.Objects;
 
 /**
- * Draws a world to SVG: arena, obstacles, numbered checkpoints, the recharge station, and optionally the
- * robot (heading and sensor rays), a trajectory coloured by category (for instance which scenario's command
- * was driving) and labelled markers (for instance recharge stops).
+ * Draws a world to SVG: arena, obstacles, numbered checkpoints, the recharge station, the start pose, a 1 m
+ * scale bar, and optionally the robot (heading and sensor rays), a trajectory coloured by category (for
+ * instance which scenario's command was driving; one colour per category) and labelled markers (for instance
+ * recharge stops).
  * <p>
  * World coordinates are metres with +y up; the picture flips y so that it looks as the world does.
  * Usage: {@code new SvgRenderer(spec).robot(sim).trajectory(points).render()}.
@@ -122,8 +123,18 @@ public final class SvgRenderer {
         return this;
     }
 
-    /** Fixes a category's colour (any CSS colour); other categories take the palette in order of appearance. */
+    /**
+     * Fixes a category's colour (any CSS colour); other categories take the first palette colour not in use.
+     *
+     * @throws IllegalArgumentException when another category has that colour: the legend could not tell them apart
+     */
     public SvgRenderer colour(String category, String cssColour) {
+        colours.forEach((other, used) -> {
+            if (!other.equals(category) && used.equalsIgnoreCase(cssColour)) {
+                throw new IllegalArgumentException("colour " + cssColour + " is already " + other + "'s; " + category
+                        + " needs one of its own");
+            }
+        });
         colours.put(category, cssColour);
         return this;
     }
@@ -157,10 +168,13 @@ public final class SvgRenderer {
                 n(r + Simulation.WALL_THICKNESS_M / 2), n(Simulation.WALL_THICKNESS_M)));
         obstacles(sb);
         station(sb, font);
-        checkpoints(sb, font);
+        checkpoints(sb);
+        start(sb, font);
         trajectory(sb);
         markers(sb, font);
         robot(sb);
+        checkpointLabels(sb, font); // after the robot, which ends on the last checkpoint
+        scaleBar(sb, half, font);
         legend(sb, half, font);
         sb.append("</svg>\n");
         return sb.toString();
@@ -192,16 +206,53 @@ public final class SvgRenderer {
                 n(s.x()), n(-s.y()), n(s.radiusM()), n(s.x()), n(-s.y() - s.radiusM() - font * 0.4)));
     }
 
-    private void checkpoints(StringBuilder sb, double font) {
+    private void checkpoints(StringBuilder sb) {
         sb.append("<g id=\"checkpoints\">\n");
+        for (WorldSpec.Checkpoint c : spec.checkpoints()) {
+            sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#fff3c4\" stroke=\"#c08a00\" stroke-width=\"0.03\" stroke-dasharray=\"0.06 0.04\"/>\n",
+                    n(c.x()), n(-c.y()), n(spec.checkpointRadiusM())));
+        }
+        sb.append("</g>\n");
+    }
+
+    /** The checkpoints' numbers, above each circle by more than the robot's radius: a robot on it never hides them. */
+    private void checkpointLabels(StringBuilder sb, double font) {
+        sb.append("<g id=\"checkpoint-labels\" fill=\"#805c00\" font-weight=\"bold\" text-anchor=\"middle\""
+                + " stroke=\"white\" stroke-width=\"0.05\" paint-order=\"stroke\">\n");
         List<WorldSpec.Checkpoint> cps = spec.checkpoints();
         for (int i = 0; i < cps.size(); i++) {
             WorldSpec.Checkpoint c = cps.get(i);
-            sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#fff3c4\" stroke=\"#c08a00\" stroke-width=\"0.03\" stroke-dasharray=\"0.06 0.04\"/>"
-                            + "<text x=\"%s\" y=\"%s\" text-anchor=\"middle\" dominant-baseline=\"central\" fill=\"#805c00\">%d</text>\n",
-                    n(c.x()), n(-c.y()), n(spec.checkpointRadiusM()), n(c.x()), n(-c.y()), i + 1));
+            sb.append(f("  <text x=\"%s\" y=\"%s\">%d</text>\n", n(c.x()), n(-c.y() - labelOffsetM()), i + 1));
         }
         sb.append("</g>\n");
+    }
+
+    /** From a checkpoint's centre up to its label's baseline, metres: clear of the circle and of a robot inside it. */
+    private double labelOffsetM() {
+        return spec.checkpointRadiusM() + spec.robot().radiusM() + 0.05;
+    }
+
+    /** Where the robot started: a hollow disc with its heading, labelled. */
+    private void start(StringBuilder sb, double font) {
+        WorldSpec.Robot r = spec.robot();
+        double heading = Math.toRadians(r.headingDeg());
+        sb.append(f("<g id=\"start\" stroke=\"#103060\" stroke-width=\"0.03\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"white\"/>"
+                        + "<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/>"
+                        + "<text x=\"%s\" y=\"%s\" stroke=\"none\" fill=\"#103060\" dominant-baseline=\"central\">start</text></g>\n",
+                n(r.x()), n(-r.y()), n(r.radiusM()), n(r.x()), n(-r.y()), n(r.x() + r.radiusM() * Math.cos(heading)),
+                n(-(r.y() + r.radiusM() * Math.sin(heading))), n(r.x() + r.radiusM() + font * 0.4), n(-r.y())));
+    }
+
+    /** A 1 m bar at the bottom left, labelled. */
+    private void scaleBar(StringBuilder sb, double half, double font) {
+        double x0 = -half + 0.15;
+        double y = half - 0.25;
+        double tick = font * 0.4;
+        sb.append(f("<g id=\"scale\" stroke=\"#222\" stroke-width=\"0.03\"><line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/>"
+                        + "<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/><line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/>"
+                        + "<text x=\"%s\" y=\"%s\" stroke=\"none\" fill=\"#222\" text-anchor=\"middle\">1 m</text></g>\n",
+                n(x0), n(y), n(x0 + 1.0), n(y), n(x0), n(y - tick), n(x0), n(y + tick), n(x0 + 1.0), n(y - tick),
+                n(x0 + 1.0), n(y + tick), n(x0 + 0.5), n(y - tick - font * 0.2)));
     }
 
     private void trajectory(StringBuilder sb) {
@@ -228,7 +279,14 @@ public final class SvgRenderer {
 
     private String colourOf(String category) {
         String key = category == null ? "" : category;
-        return colours.computeIfAbsent(key, k -> PALETTE[colours.size() % PALETTE.length]);
+        return colours.computeIfAbsent(key, k -> {
+            for (String candidate : PALETTE) {
+                if (colours.values().stream().noneMatch(candidate::equalsIgnoreCase)) {
+                    return candidate;
+                }
+            }
+            return PALETTE[colours.size() % PALETTE.length]; // more categories than colours
+        });
     }
 
     private void markers(StringBuilder sb, double font) {

@@ -2,6 +2,7 @@ package org.proactiverobotics.sim2d;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.InputStreamReader;
 import java.io.UncheckedIOException;
 import java.net.JarURLConnection;
 import java.net.URISyntaxException;
@@ -12,6 +13,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Enumeration;
 import java.util.List;
+import java.util.Properties;
 import java.util.TreeSet;
 import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
@@ -28,6 +30,7 @@ public final class WorldFiles {
     public static final String DEFAULT_WORLD = "reference-arena";
 
     private static final String RESOURCE_DIR = "worlds/";
+    private static final String DESCRIPTIONS = "descriptions.properties";
 
     private WorldFiles() {
     }
@@ -83,6 +86,22 @@ public final class WorldFiles {
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read bundled world " + resource, e);
         }
+    }
+
+    /**
+     * @param name a bundled world's name
+     * @return one line of what the world is for (from {@code worlds/descriptions.properties}), or "" when it has none
+     */
+    public static String description(String name) {
+        Properties descriptions = new Properties();
+        try (InputStream in = WorldFiles.class.getClassLoader().getResourceAsStream(RESOURCE_DIR + DESCRIPTIONS)) {
+            if (in != null) {
+                descriptions.load(new InputStreamReader(in, StandardCharsets.UTF_8));
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot read " + RESOURCE_DIR + DESCRIPTIONS, e);
+        }
+        return descriptions.getProperty(name, "");
     }
 
     /** @return the default world, {@value #DEFAULT_WORLD} */

@@ -289,6 +289,12 @@ class WorldFilesTest {
 
     @ParameterizedTest
     @MethodSource("bundledNames")
+    void everyBundledWorldSaysWhatItIsFor(String name) {
+        assertThat(WorldFiles.description(name)).as(name + " in worlds/descriptions.properties").isNotBlank();
+    }
+
+    @ParameterizedTest
+    @MethodSource("bundledNames")
     void everyBundledWorldLeavesRoomToManoeuvre(String name) {
         WorldSpec w = WorldFiles.bundled(name);
         double r = w.arena().radiusM();

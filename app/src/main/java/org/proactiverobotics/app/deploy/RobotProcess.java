@@ -103,9 +103,9 @@ public final class RobotProcess {
         long steps = times == null ? 0 : times.steps();
         MissionReport.Timing timing = times == null ? null
                 : MissionReport.Timing.rounded(times.physicsMs(), times.senseMs() + times.actMs(), times.waitMs());
-        // strategy: the engine's (the robot user may not read it); ruleFailures: -1, the robot cannot see them
+        // strategy and ruleFailures left out: the robot's user may read neither the strategy nor rule_failures table
         return MissionReport.of(sim, outcome, null, MissionReport.databaseKind(options.db().url()), wallS, steps,
-                engineIterations, wins, -1, timing);
+                engineIterations, wins, null, timing);
     }
 
     /** The lockstep gate plus one INFO line every N steps and the heartbeat. */

@@ -77,6 +77,10 @@ public final class UsersScript {
     }
 
     /**
+     * The script filled in, under a header of its own: the template's header explains the placeholders, and a
+     * filled copy of it would repeat the passwords. Passwords go only into the statements that set them, never
+     * into a comment.
+     *
      * @param values the placeholders' values (checked: see {@link Values#problem()})
      * @return the script, filled in
      */
@@ -85,9 +89,27 @@ public final class UsersScript {
         if (problem != null) {
             throw new IllegalArgumentException(problem);
         }
-        return template().replace("@DATABASE@", values.database()).replace("@HOST@", values.host())
-                .replace("@ENGINE_USER@", values.engineUser()).replace("@ENGINE_PASSWORD@", values.enginePassword())
-                .replace("@ROBOT_USER@", values.robotUser()).replace("@ROBOT_PASSWORD@", values.robotPassword());
+        StringBuilder script = new StringBuilder()
+                .append("-- proactive-robotics: the least-privilege users ").append(values.engineUser()).append(" and ")
+                .append(values.robotUser()).append(" (host '").append(values.host()).append("') on database `")
+                .append(values.database()).append("`,\n")
+                .append("-- deploy/users.sql filled in by `proactive db users`. Apply it as an administrator after schema.sql.\n")
+                .append("-- Idempotent: applying it again resets the passwords and adds no privilege.\n\n");
+        List<String> lines = template().lines().toList();
+        int body = 0;
+        while (body < lines.size() && (lines.get(body).startsWith("--") || lines.get(body).isBlank())) {
+            body++; // the template's header
+        }
+        for (String line : lines.subList(body, lines.size())) {
+            String filled = line.replace("@DATABASE@", values.database()).replace("@HOST@", values.host())
+                    .replace("@ENGINE_USER@", values.engineUser()).replace("@ROBOT_USER@", values.robotUser());
+            if (!line.startsWith("--")) {
+                filled = filled.replace("@ENGINE_PASSWORD@", values.enginePassword())
+                        .replace("@ROBOT_PASSWORD@", values.robotPassword());
+            }
+            script.append(filled).append('\n');
+        }
+        return script.toString();
     }
 
     /**

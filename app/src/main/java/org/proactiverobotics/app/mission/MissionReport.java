@@ -13,7 +13,8 @@ import org.proactiverobotics.sim2d.Simulation;
  * @param world              the world's name
  * @param success            whether the mission was accomplished
  * @param outcome            how it ended
- * @param strategy           the strategy the run started with
+ * @param strategy           the strategy the run started with; null, and left out of report.json, in the robot
+ *                           process's report: its database user may not read the engine's strategy table
  * @param database           the kind of database (h2, mariadb, mysql)
  * @param checkpointsReached ground truth, in order
  * @param checkpointsTotal   how many the world has
@@ -29,7 +30,8 @@ import org.proactiverobotics.sim2d.Simulation;
  * @param finalBattery       ground truth, battery at the end, percent
  * @param recharges          ground truth, charging sessions
  * @param commandWins        commands sent, by the scenario whose suggestion won
- * @param ruleFailures       rule parts that threw
+ * @param ruleFailures       rule parts that threw; null, and left out of report.json, in the robot process's
+ *                           report: its database user may not read the engine's rule_failures table
  * @param timing             mean wall time per control step, milliseconds, by phase
  */
 public record MissionReport(
@@ -52,7 +54,7 @@ public record MissionReport(
         double finalBattery,
         int recharges,
         Map<String, Long> commandWins,
-        long ruleFailures,
+        Long ruleFailures,
         Timing timing) {
 
     /**
@@ -60,19 +62,19 @@ public record MissionReport(
      *
      * @param sim              the simulation, at the mission's end
      * @param outcome          how it ended
-     * @param strategy         the strategy the run started with, or null when unknown
+     * @param strategy         the strategy the run started with, or null when this process cannot see it
      * @param database         the kind of database ({@link #databaseKind}) or "direct"
      * @param wallTimeS        wall-clock seconds of the mission loop
      * @param controlSteps     robot control steps
      * @param engineIterations engine iterations
      * @param commandWins      commands the robot got, by scenario
-     * @param ruleFailures     rule parts that threw (-1 when the runner cannot see them)
+     * @param ruleFailures     rule parts that threw, or null when this process cannot see them
      * @param timing           mean wall time per control step by phase, or null
      * @return the report
      */
     public static MissionReport of(Simulation sim, Outcome outcome, String strategy, String database, double wallTimeS,
                                    long controlSteps, long engineIterations, Map<String, Long> commandWins,
-                                   long ruleFailures, Timing timing) {
+                                   Long ruleFailures, Timing timing) {
         GroundTruth truth = sim.groundTruth();
         double simS = sim.simTimeMs() / 1000.0;
         return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, strategy, database,
