@@ -219,11 +219,13 @@ public final class ScenarioPlugins {
         return name;
     }
 
+    /** The innermost cause, as "Type: message": what the plug-in's author needs, without the ServiceLoader wrapping. */
     private static String cause(Throwable e) {
-        StringBuilder text = new StringBuilder(String.valueOf(e.getMessage()));
-        for (Throwable c = e.getCause(); c != null; c = c.getCause()) {
-            text.append(": ").append(c);
+        Throwable root = e;
+        while (root.getCause() != null) {
+            root = root.getCause();
         }
-        return text.toString();
+        String text = root.getClass().getSimpleName() + (root.getMessage() == null ? "" : ": " + root.getMessage());
+        return root == e ? text : e.getMessage() + " (" + text + ")";
     }
 }
