@@ -7,9 +7,12 @@ import java.util.List;
  * scenario knows nothing of the others.
  *
  * <p>Plug one in without editing the engine: implement this interface (public, with a public
- * no-argument constructor) and list the class in
- * {@code META-INF/services/org.proactiverobotics.engine.Scenario}; {@link StartUp} then finds
- * it by {@link #name()}.
+ * no-argument constructor), list the class in
+ * {@code META-INF/services/org.proactiverobotics.engine.Scenario} of a jar built against the
+ * engine alone, and give the jar to {@code run --scenarios} or {@code engine --scenarios};
+ * {@link StartUp} then finds it by {@link #name()}. Its rules suggest commands with
+ * {@link RuleContext#suggest}: the engine gives the scenario its CommandArray slot, and a
+ * strategy ranks it by name. See docs/writing-a-scenario.md.
  */
 public interface Scenario {
 
