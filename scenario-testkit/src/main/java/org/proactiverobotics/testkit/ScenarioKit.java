@@ -390,7 +390,7 @@ public final class ScenarioKit implements AutoCloseable {
 
         /**
          * Starts a fresh engine with the chosen scenarios, writes the strategy, and runs the
-         * {@value ScenarioKit#START_UP_ITERATIONS} start-up iterations: the next {@link #step()}
+         * {@value ScenarioKit#START_UP_ITERATIONS} start-up iterations: the next {@link ScenarioKit#step()}
          * is the first in which the scenarios' own rules run.
          *
          * @return the kit; close it at the end of the test

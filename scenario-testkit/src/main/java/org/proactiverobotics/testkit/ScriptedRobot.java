@@ -119,7 +119,10 @@ public final class ScriptedRobot {
         return this;
     }
 
-    /** @return whether this sensor writes a reading at the next step */
+    /**
+     * @param sensor a sensor
+     * @return whether it writes a reading (and answers its requests) at the next step
+     */
     public boolean publishes(Sensor sensor) {
         if (silent.contains(sensor)) {
             return false;
