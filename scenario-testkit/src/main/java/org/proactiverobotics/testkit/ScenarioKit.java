@@ -19,6 +19,9 @@ import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.ScenarioPlugins;
 import org.proactiverobotics.engine.robot.Strategy;
+import org.proactiverobotics.engine.scenario.dataacquisition.DataAcquisitionScenario;
+import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
+import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
 import org.proactiverobotics.engine.tables.EngineTables;
 
 /**
@@ -74,7 +77,7 @@ public final class ScenarioKit implements AutoCloseable {
             ScenarioPlugins plugins = ScenarioPlugins.of(b.scenarios.toArray(Scenario[]::new));
             Set<String> names = new LinkedHashSet<>(b.builtIns);
             names.addAll(plugins.scenarios().keySet());
-            names.add("DecisionMaking");
+            names.add(DecisionMakingScenario.NAME);
             this.engine = RobotEngine.builder()
                     .robotId(ROBOT_ID)
                     .database(db.dataSource())
@@ -327,12 +330,12 @@ public final class ScenarioKit implements AutoCloseable {
 
         /** @return this builder, with the DataAcquisition scenario, which requests sensor readings */
         public Builder withDataAcquisition() {
-            return builtIn("DataAcquisition");
+            return builtIn(DataAcquisitionScenario.NAME);
         }
 
         /** @return this builder, with the FailSafe scenario, which withdraws and restarts failing scenarios */
         public Builder withFailSafe() {
-            return builtIn("FailSafe");
+            return builtIn(FailSafeScenario.NAME);
         }
 
         /**
