@@ -1,4 +1,4 @@
-package org.proactiverobotics.engine.scenario;
+package org.proactiverobotics.testkit.scenarios;
 
 import java.util.List;
 import java.util.Optional;
@@ -7,9 +7,9 @@ import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.EngineComments;
+import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
-import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
@@ -21,16 +21,19 @@ import org.proactiverobotics.engine.tables.StrategyTable;
  * The robot tables with a fault to inject: while a scenario's package is set as failing, every
  * call made from a class of that package throws (as a database that refuses one scenario's
  * statements would); every other call goes through. Which scenario calls is read off the stack.
+ * Give {@link #wrap} to the kit's {@code faults}.
  */
 final class FaultyTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments {
 
     private static final StackWalker STACK = StackWalker.getInstance(StackWalker.Option.RETAIN_CLASS_REFERENCE);
 
-    private final JdbcRobotTables tables;
+    private EngineTables tables;
     private volatile String failingPackage;
 
-    FaultyTables(JdbcRobotTables tables) {
-        this.tables = tables;
+    /** @return the tables the engine's rules see: these, calling through to the given ones */
+    EngineTables wrap(EngineTables wrapped) {
+        this.tables = wrapped;
+        return EngineTables.of(this, wrapped.pruneHistory());
     }
 
     /** Every call from this scenario's package throws from now on. */
@@ -60,31 +63,31 @@ final class FaultyTables implements SensorReadings, SensorRequests, MissionTable
     @Override
     public Optional<GpsFix> newestGps() {
         check();
-        return tables.newestGps();
+        return tables.readings().newestGps();
     }
 
     @Override
     public Optional<Heading> newestHeading() {
         check();
-        return tables.newestHeading();
+        return tables.readings().newestHeading();
     }
 
     @Override
     public Optional<DistanceScan> newestScan() {
         check();
-        return tables.newestScan();
+        return tables.readings().newestScan();
     }
 
     @Override
     public Optional<BatteryState> newestBattery() {
         check();
-        return tables.newestBattery();
+        return tables.readings().newestBattery();
     }
 
     @Override
     public long newestSimTimeMs(Sensor sensor) {
         check();
-        return tables.newestSimTimeMs(sensor);
+        return tables.readings().newestSimTimeMs(sensor);
     }
 
     @Override
@@ -94,53 +97,53 @@ final class FaultyTables implements SensorReadings, SensorRequests, MissionTable
             failOnceOn = null;
             throw new IllegalStateException("injected fault: one read of " + sensor + " requests refused");
         }
-        return tables.pending(sensor);
+        return tables.requests().pending(sensor);
     }
 
     @Override
     public void request(Sensor sensor, long iteration) {
         check();
-        tables.request(sensor, iteration);
+        tables.requests().request(sensor, iteration);
     }
 
     @Override
     public List<Checkpoint> checkpoints() {
         check();
-        return tables.checkpoints();
+        return tables.mission().checkpoints();
     }
 
     @Override
     public void markReached(int seq, long simTimeMs) {
         check();
-        tables.markReached(seq, simTimeMs);
+        tables.mission().markReached(seq, simTimeMs);
     }
 
     @Override
     public Optional<Station> rechargeStation() {
         check();
-        return tables.rechargeStation();
+        return tables.mission().rechargeStation();
     }
 
     @Override
     public OptionalDouble rechargeLevelPct() {
         check();
-        return tables.rechargeLevelPct();
+        return tables.mission().rechargeLevelPct();
     }
 
     @Override
     public List<Entry> read() {
         check();
-        return tables.read();
+        return tables.strategy().read();
     }
 
     @Override
     public void write(List<Entry> entries) {
-        tables.write(entries);
+        tables.strategy().write(entries);
     }
 
     @Override
     public void send(long iteration, long simTimeMs, String scenario, String command) {
         check();
-        tables.send(iteration, simTimeMs, scenario, command);
+        tables.comments().send(iteration, simTimeMs, scenario, command);
     }
 }
