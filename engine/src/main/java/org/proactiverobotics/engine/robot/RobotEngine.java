@@ -391,8 +391,10 @@ public final class RobotEngine {
             EngineTables wired = decorate.apply(base);
 
             List<Scenario> known = new ArrayList<>();
-            ScenarioRegistry builtIn = ScenarioRegistry.load(RobotEngine.class.getClassLoader());
-            builtIn.names().forEach(name -> known.add(builtIn.get(name)));
+            ScenarioRegistry onClassPath = ScenarioRegistry.load(RobotEngine.class.getClassLoader());
+            // A plug-in also listed on the class path (a user's own project under test) is taken once, as the plug-in.
+            onClassPath.names().stream().filter(name -> !plugins.scenarios().containsKey(name))
+                    .forEach(name -> known.add(onClassPath.get(name)));
             known.addAll(plugins.scenarios().values());
             ScenarioRegistry registry = ScenarioRegistry.of(known);
 
@@ -415,12 +417,7 @@ public final class RobotEngine {
                     .service(StrategyTable.class, wired.strategy())
                     .service(EngineComments.class, wired.comments())
                     .service(DriveProfile.class, drive);
-            FIRST.forEach((name, slot) -> {
-                if (slot >= 0) {
-                    b.slot(name, slot);
-                }
-            });
-            plugins.scenarios().keySet().forEach(b::slot);
+            freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {
                 b.service(DecisionObserver.class, observer);
             }
