@@ -12,26 +12,37 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.proactiverobotics.engine.robot.Strategy;
+import org.proactiverobotics.engine.robot.StrategyException;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldValidationException;
 
 /**
  * Every {@code ```json} block of docs/*.md and README.md is checked against the real thing: a world file
- * by the real parser, a report.json or a trace.jsonl line against the files a real mission writes. A block
- * that is none of these fails, so the manual cannot carry unchecked JSON.
+ * by the real parser, a report.json or a trace.jsonl line against the files a real mission writes, a
+ * strategy file by the real strategy parser and against the built-in scenarios' slots. A block that is
+ * none of these fails, so the manual cannot carry unchecked JSON.
  */
 class DocsExamplesTest extends CommandLineTest {
 
     /** Precedes a world-file example that must be refused. */
     static final String INVALID_WORLD = "<!-- invalid-world -->";
     private static final Pattern JSON_BLOCK = Pattern.compile("(?m)^```json\\n(.*?)^```", Pattern.DOTALL);
+
+    /** What the robot process's report leaves out: its database user may read neither table. */
+    private static final Set<String> ENGINE_ONLY_REPORT_KEYS = Set.of("strategy", "ruleFailures");
 
     private static JsonObject realReport;
     private static JsonObject realTraceLine;
@@ -88,6 +99,7 @@ class DocsExamplesTest extends CommandLineTest {
         int invalidWorlds = 0;
         int reports = 0;
         int traceLines = 0;
+        int strategies = 0;
         for (Example e : examples) {
             JsonObject o = e.value().isJsonObject() ? e.value().getAsJsonObject() : null;
             if (e.markedInvalidWorld()) {
@@ -104,20 +116,71 @@ class DocsExamplesTest extends CommandLineTest {
                 }
                 worlds++;
             } else if (o != null && o.has("outcome") && o.has("checkpointsReached")) {
-                assertThat(o.keySet()).as(e.where() + ": report.json's keys").isEqualTo(realReport.keySet());
+                Set<String> expected = new LinkedHashSet<>(realReport.keySet());
+                if (!o.has("strategy")) { // the robot process's report (docs/report.md): the engine's fields left out
+                    expected.removeAll(ENGINE_ONLY_REPORT_KEYS);
+                }
+                assertThat(o.keySet()).as(e.where() + ": report.json's keys").isEqualTo(expected);
                 assertThat(o.getAsJsonObject("timing").keySet()).as(e.where() + ": report.json's timing keys")
                         .isEqualTo(realReport.getAsJsonObject("timing").keySet());
                 reports++;
             } else if (o != null && o.has("winner") && o.has("suggestions")) {
                 assertThat(o.keySet()).as(e.where() + ": trace.jsonl's keys").isEqualTo(realTraceLine.keySet());
                 traceLines++;
+            } else if (o != null && o.has("priorities")) {
+                checkStrategyFile(e);
+                strategies++;
             } else {
-                fail(e.where() + ": a JSON example that is neither a world file, a report.json nor a trace.jsonl"
-                        + " line, so nothing checks it: " + e.value());
+                fail(e.where() + ": a JSON example that is neither a world file, a report.json, a trace.jsonl"
+                        + " line nor a strategy file, so nothing checks it: " + e.value());
             }
         }
-        assertThat(List.of(worlds, invalidWorlds, reports, traceLines)).as("each kind is shown at least once")
+        assertThat(List.of(worlds, invalidWorlds, reports, traceLines, strategies)).as("each kind is shown at least once")
                 .doesNotContain(0);
+    }
+
+    /**
+     * A strategy-file example must be what {@code --strategy-file} accepts on a mission of the built-in
+     * scenarios: parsed by the real parser, naming only scenarios that have a slot, and turned into one
+     * strategy row per slot. One named like a bundled strategy must be that strategy.
+     *
+     * @return the strategy's name
+     */
+    private static String checkStrategyFile(Example e) {
+        Map<String, Integer> builtInSlots = RobotEngine.freshSlots(ScenarioPlugins.none());
+        Strategy strategy;
+        try {
+            strategy = Strategy.parse(e.value().toString(), e.where());
+            assertThat(strategy.rows(builtInSlots)).as(e.where() + ": one strategy row per built-in slot")
+                    .hasSize(builtInSlots.size());
+        } catch (StrategyException ex) {
+            throw new AssertionError(e.where() + ": a strategy-file example that --strategy-file refuses: "
+                    + ex.getMessage(), ex);
+        }
+        if (Strategy.names().contains(strategy.name())) {
+            assertThat(strategy).as(e.where() + ": an example named like the bundled strategy " + strategy.name())
+                    .isEqualTo(Strategy.named(strategy.name()));
+        }
+        return strategy.name();
+    }
+
+    @Test
+    void aStrategyFileExampleThatStrategyFileWouldRefuseFailsTheCheck() {
+        assertThat(checkStrategyFile(strategyExample("{\"name\": \"cautious\", \"priorities\": {\"ObstacleAvoidance\": 3,"
+                + " \"ReachDestination\": 1}, \"timeoutsMs\": {\"ObstacleAvoidance\": 200}}"))).isEqualTo("cautious");
+        assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"priorities\": {\"SpeedGovernor\": 2}}")))
+                .isInstanceOf(AssertionError.class).hasMessageContaining("SpeedGovernor");
+        assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"priorities\": {\"ReachDestination\": \"high\"}}")))
+                .isInstanceOf(AssertionError.class).hasMessageContaining("priorities.ReachDestination");
+        assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"priorities\": {\"ReachDestination\": 1}, \"weights\": {}}")))
+                .isInstanceOf(AssertionError.class).hasMessageContaining("weights");
+        assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"name\": \"safety-first\", \"priorities\":"
+                + " {\"ReachDestination\": 3, \"ObstacleAvoidance\": 2, \"BatteryMonitor\": 1}}")))
+                .as("an example named like a bundled strategy but not it").isInstanceOf(AssertionError.class);
+    }
+
+    private static Example strategyExample(String json) {
+        return new Example("docs/example.md:1", JsonParser.parseString(json), false);
     }
 
     @Test
