@@ -66,7 +66,7 @@ public final class DbCommand implements Runnable {
             }
             PrintWriter out = spec.commandLine().getOut();
             if (create && db.server() != null && !DATABASE_NAME.matcher(String.valueOf(DbOptions.databaseIn(db.url()))).matches()) {
-                return fail(err, "--create needs a database name of letters, digits, '_' or '$' in --db: " + db.url(),
+                return fail(err, "--create needs a database name of letters, digits, '_' or '$' in --db: " + DbOptions.redacted(db.url()),
                         Main.EXIT_BAD_INPUT);
             }
             try {
@@ -107,8 +107,9 @@ public final class DbCommand implements Runnable {
     /** {@code db users}: creates the two least-privilege users. */
     @Command(name = "users", mixinStandardHelpOptions = true,
             description = {"Creates (or updates) the engine's and the robot's users with their grants on the URL's database.",
-                    "Apply `db init` first. The engine user reads the robot's tables and writes its own; the robot user",
-                    "writes its readings, answers requests and reads commands; neither may create, drop, alter or grant."})
+                    "Apply `db init` first. The engine user reads the robot's tables and writes its own; the robot user"
+                            + " writes its readings, answers requests and reads commands; neither may create, drop, alter"
+                            + " or grant."})
     static final class Users implements Callable<Integer> {
 
         @Mixin
@@ -169,7 +170,7 @@ public final class DbCommand implements Runnable {
                     database = rs.getString(1);
                 }
                 if (database == null) {
-                    return fail(err, "the URL names no database: " + db.url(), Main.EXIT_BAD_INPUT);
+                    return fail(err, "the URL names no database: " + DbOptions.redacted(db.url()), Main.EXIT_BAD_INPUT);
                 }
                 UsersScript.Values values = values(database);
                 if (values.problem() != null) {

@@ -105,7 +105,7 @@ public final class RobotCommand implements Callable<Integer> {
     private int runMission(WorldSpec worldSpec, OutputDirectory output, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
         Path outDir = output.path();
         Lockstep.Timing mode = Lockstep.Timing.valueOf(timing.toUpperCase(Locale.ROOT));
-        stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), db.url(), mode.label());
+        stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), DbOptions.redacted(db.url()), mode.label());
         stdout.flush();
         MissionReport report;
         try {

@@ -8,7 +8,6 @@ import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.sql.DriverManager;
 import java.sql.SQLException;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
@@ -119,9 +118,9 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
-        if (db != null && !supportedJdbcUrl(db)) {
+        if (db != null && !DbOptions.driverAccepts(db)) {
             err.println("--db must be a JDBC URL this program has a driver for (jdbc:h2:..., jdbc:mariadb://...,"
-                    + " jdbc:mysql://...): " + db);
+                    + " jdbc:mysql://...): " + DbOptions.redacted(db));
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
@@ -165,7 +164,7 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
         }
         stdout.printf(Locale.ROOT, "Mission %s on %s, strategy %s%s%n", spec.name(),
-                layer == MissionOptions.Link.DIRECT ? "the direct in-process link" : db != null ? db : "embedded H2",
+                layer == MissionOptions.Link.DIRECT ? "the direct in-process link" : db != null ? DbOptions.redacted(db) : "embedded H2",
                 choice.strategy().name(), choice.plugins().scenarios().isEmpty() ? ""
                         : ", plug-in scenarios " + String.join(", ", choice.plugins().scenarios().keySet()));
         stdout.flush();
@@ -213,15 +212,6 @@ public final class RunCommand implements Callable<Integer> {
             }
         }
         return false;
-    }
-
-    /** Whether a JDBC driver on the class path accepts the URL (checked before anything is written). */
-    static boolean supportedJdbcUrl(String url) {
-        try {
-            return url.startsWith("jdbc:") && DriverManager.getDriver(url) != null;
-        } catch (SQLException e) {
-            return false;
-        }
     }
 
     static void writeReport(MissionReport report, Path file) throws IOException {

@@ -4,7 +4,8 @@ import java.util.Arrays;
 
 /**
  * The paper's CommandArray: a 1×n array where each scenario enters its suggestion at its own
- * slot (default index); the decision scenario reads it in {@link PriorityArray} order.
+ * slot (given by the engine at start, {@link RuleContext#suggest}); the decision scenario reads
+ * it in {@link PriorityArray} order.
  * Used from the engine thread only.
  */
 public final class CommandArray {

@@ -96,7 +96,7 @@ public final class DatabaseProblem {
             if (state.startsWith("42S02") || code == 1146 || code == 42102 || code == 42104) {
                 return new DatabaseProblem(Cause.NO_SCHEMA, "the schema is not applied"
                         + (table == null ? "" : " (table " + table + " missing)") + ": " + words
-                        + " — apply it: `db init --db " + url + "`");
+                        + " — apply it: `db init --db " + DbOptions.redacted(url) + "`");
             }
             if (text.startsWith("No suitable driver")) {
                 return new DatabaseProblem(Cause.UNSUPPORTED_URL, words
@@ -106,7 +106,7 @@ public final class DatabaseProblem {
                 return unreachable(host, words);
             }
         }
-        return new DatabaseProblem(Cause.OTHER, "database failure at " + (host == null ? url : host) + ": " + words);
+        return new DatabaseProblem(Cause.OTHER, "database failure at " + (host == null ? DbOptions.redacted(url) : host) + ": " + words);
     }
 
     private static DatabaseProblem unreachable(String host, String words) {
@@ -197,6 +197,6 @@ public final class DatabaseProblem {
             return m.group(1);
         }
         String name = DbOptions.databaseIn(url);
-        return name == null ? url : name;
+        return name == null ? DbOptions.redacted(url) : name;
     }
 }

@@ -14,6 +14,9 @@ import picocli.CommandLine.Option;
  */
 public final class DbOptions {
 
+    /** A password given in a JDBC URL (MySQL/MariaDB ?password=, H2 ;PASSWORD=). */
+    private static final Pattern PASSWORD_IN_URL = Pattern.compile("((?:^|[?&;:])password=)[^&;]*", Pattern.CASE_INSENSITIVE);
+
     /** The environment variable a password defaults to. */
     public static final String PASSWORD_VARIABLE = "PROACTIVE_DB_PASSWORD";
 
@@ -115,12 +118,27 @@ public final class DbOptions {
 
     /** @return why these options are unusable, or null when they are fine */
     public String problem() {
-        if (!url.startsWith("jdbc:")) {
-            return "--db must be a JDBC URL (jdbc:mysql://..., jdbc:mariadb://..., jdbc:h2:...): " + url;
+        if (!driverAccepts(url)) {
+            return "--db must be a JDBC URL this program has a driver for (jdbc:mysql://..., jdbc:mariadb://...,"
+                    + " jdbc:h2:...): " + redacted(url);
         }
         if (waitS < 0) {
             return "--wait-s must be >= 0: " + waitS;
         }
         return null;
+    }
+
+    /** @return whether a JDBC driver on the class path accepts the URL (checked before anything is written) */
+    public static boolean driverAccepts(String url) {
+        try {
+            return url != null && url.startsWith("jdbc:") && DriverManager.getDriver(url) != null;
+        } catch (SQLException e) {
+            return false;
+        }
+    }
+
+    /** @return the URL with any password in it replaced by {@code ***}: what may be printed on a console or a log */
+    public static String redacted(String url) {
+        return url == null ? null : PASSWORD_IN_URL.matcher(url).replaceAll("$1***");
     }
 }

@@ -5,6 +5,7 @@ import java.sql.SQLException;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
+import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.robot.LoopTimes;
@@ -133,12 +134,12 @@ public final class RobotProcess {
             if (step % options.logEvery() == 0) {
                 GroundTruth truth = sim.groundTruth();
                 double wallS = (System.nanoTime() - startNanos) / 1e9;
-                LOG.info("robot {}: step {}, {} s simulated ({}x real time), checkpoints {}/{}, battery {} %, {} m, {} collision(s)",
+                LOG.info("robot {}: step {}, {} s simulated ({}x real time), checkpoints {}/{}, battery {} %, {} m, {}",
                         options.robotId(), step, String.format(Locale.ROOT, "%.1f", simTimeMs / 1000.0),
                         String.format(Locale.ROOT, "%.1f", simTimeMs / 1000.0 / Math.max(wallS, 1e-9)),
                         truth.checkpointsReached(), truth.checkpointsTotal(),
                         String.format(Locale.ROOT, "%.1f", truth.batteryPct()),
-                        String.format(Locale.ROOT, "%.1f", truth.distanceM()), truth.collisions());
+                        String.format(Locale.ROOT, "%.1f", truth.distanceM()), Plural.of(truth.collisions(), "collision"));
             }
         }
     }
