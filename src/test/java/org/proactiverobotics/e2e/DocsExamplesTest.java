@@ -141,17 +141,18 @@ class DocsExamplesTest extends CommandLineTest {
 
     /**
      * A strategy-file example must be what {@code --strategy-file} accepts on a mission of the built-in
-     * scenarios: parsed by the real parser, naming only scenarios that have a slot, and turned into one
-     * strategy row per slot. One named like a bundled strategy must be that strategy.
+     * scenarios and the example project's plug-ins (examples/scenario-example, which the tutorial builds):
+     * parsed by the real parser, naming only scenarios that have a slot, and turned into one strategy row
+     * per slot. One named like a bundled strategy must be that strategy.
      *
      * @return the strategy's name
      */
     private static String checkStrategyFile(Example e) {
-        Map<String, Integer> builtInSlots = RobotEngine.freshSlots(ScenarioPlugins.none());
+        Map<String, Integer> builtInSlots = slotsWithExamplePlugins();
         Strategy strategy;
         try {
             strategy = Strategy.parse(e.value().toString(), e.where());
-            assertThat(strategy.rows(builtInSlots)).as(e.where() + ": one strategy row per built-in slot")
+            assertThat(strategy.rows(builtInSlots)).as(e.where() + ": one strategy row per slot")
                     .hasSize(builtInSlots.size());
         } catch (StrategyException ex) {
             throw new AssertionError(e.where() + ": a strategy-file example that --strategy-file refuses: "
@@ -164,12 +165,43 @@ class DocsExamplesTest extends CommandLineTest {
         return strategy.name();
     }
 
+    /**
+     * The slots of a mission with the example project's scenarios as plug-ins: the built-in ones, then
+     * each scenario its services file lists, by the name its class declares.
+     */
+    static Map<String, Integer> slotsWithExamplePlugins() {
+        Path example = Deployment.root().resolve("examples/scenario-example");
+        Map<String, Integer> slots = new java.util.LinkedHashMap<>(RobotEngine.freshSlots(ScenarioPlugins.none()));
+        Pattern name = Pattern.compile("String NAME = \"([^\"]+)\"");
+        try {
+            for (String type : Files.readAllLines(example.resolve("src/main/resources/" + PluginJars.SERVICES))) {
+                if (type.isBlank()) {
+                    continue;
+                }
+                Matcher m = name.matcher(Files.readString(example.resolve("src/main/java/" + type.trim().replace('.', '/') + ".java")));
+                assertThat(m.find()).as(type + " declares its NAME").isTrue();
+                slots.put(m.group(1), slots.size());
+            }
+        } catch (IOException ex) {
+            throw new java.io.UncheckedIOException(ex);
+        }
+        return slots;
+    }
+
+    @Test
+    void theExampleProjectsStrategyFileIsWhatStrategyFileAccepts() throws IOException {
+        Path careful = Deployment.root().resolve("examples/scenario-example/careful.json");
+        Example e = new Example("examples/scenario-example/careful.json", JsonParser.parseString(Files.readString(careful)), false);
+        assertThat(checkStrategyFile(e)).isEqualTo("careful");
+        assertThat(slotsWithExamplePlugins()).containsKeys("SpeedGovernor", "ReturnToStation");
+    }
+
     @Test
     void aStrategyFileExampleThatStrategyFileWouldRefuseFailsTheCheck() {
         assertThat(checkStrategyFile(strategyExample("{\"name\": \"cautious\", \"priorities\": {\"ObstacleAvoidance\": 3,"
                 + " \"ReachDestination\": 1}, \"timeoutsMs\": {\"ObstacleAvoidance\": 200}}"))).isEqualTo("cautious");
-        assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"priorities\": {\"SpeedGovernor\": 2}}")))
-                .isInstanceOf(AssertionError.class).hasMessageContaining("SpeedGovernor");
+        assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"priorities\": {\"SpeedGovenor\": 2}}")))
+                .isInstanceOf(AssertionError.class).hasMessageContaining("SpeedGovenor");
         assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"priorities\": {\"ReachDestination\": \"high\"}}")))
                 .isInstanceOf(AssertionError.class).hasMessageContaining("priorities.ReachDestination");
         assertThatThrownBy(() -> checkStrategyFile(strategyExample("{\"priorities\": {\"ReachDestination\": 1}, \"weights\": {}}")))
