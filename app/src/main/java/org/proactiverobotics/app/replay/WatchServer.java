@@ -67,6 +67,11 @@ public final class WatchServer implements AutoCloseable {
         if (!allowed(ex)) {
             return;
         }
+        if ("/favicon.ico".equals(ex.getRequestURI().getPath())) {
+            ex.sendResponseHeaders(204, -1); // no icon: the browser asks anyway
+            ex.close();
+            return;
+        }
         if (!"/".equals(ex.getRequestURI().getPath()) && !"/index.html".equals(ex.getRequestURI().getPath())) {
             send(ex, 404, "text/plain; charset=utf-8", "not found: " + ex.getRequestURI().getPath());
             return;
