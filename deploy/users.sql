@@ -1,12 +1,13 @@
 -- proactive-robotics: the two least-privilege database users of the two-process deployment.
 --
--- A template. @DATABASE@, @HOST@, @ENGINE_USER@, @ENGINE_PASSWORD@, @ROBOT_USER@ and
--- @ROBOT_PASSWORD@ are filled in by deploy/mysql-init/02-users.sh (docker compose's MySQL
+-- A template. @DATABASE@, @HOST@, @ENGINE_USER@, @ENGINE_PASSWORD@, @ROBOT_USER@,
+-- @ROBOT_PASSWORD@, @VIEWER_USER@ and @VIEWER_PASSWORD@ are filled in by deploy/mysql-init/02-users.sh (docker compose's MySQL
 -- initialisation) or by `proactive db users` (an existing server). Apply it as an
 -- administrator after schema.sql (MySQL grants on a table only once it exists). Idempotent:
 -- applying it again resets the passwords and adds no privilege.
 --
 -- Neither user may CREATE, DROP, ALTER or GRANT anything; each writes only its own tables.
+-- The viewer (`watch`) is optional: without a viewer password, every line naming it is left out.
 -- MariaDB 10.6+ and MySQL 8 accept every statement unchanged.
 
 CREATE USER IF NOT EXISTS '@ENGINE_USER@'@'@HOST@' IDENTIFIED BY '@ENGINE_PASSWORD@';
@@ -47,3 +48,16 @@ GRANT SELECT, INSERT ON `@DATABASE@`.checkpoints TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT ON `@DATABASE@`.recharge_station TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT ON `@DATABASE@`.battery_recharged TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE ON `@DATABASE@`.robot_clock TO '@ROBOT_USER@'@'@HOST@';
+
+-- ---- The viewer (`watch`): reads what the live view shows, writes nothing ------------------
+CREATE USER IF NOT EXISTS '@VIEWER_USER@'@'@HOST@' IDENTIFIED BY '@VIEWER_PASSWORD@';
+ALTER USER '@VIEWER_USER@'@'@HOST@' IDENTIFIED BY '@VIEWER_PASSWORD@';
+GRANT SELECT ON `@DATABASE@`.engine_comments TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.gps_stored_values TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.iudata TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.distance_sensor_data TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.battery_level TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.checkpoints TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.recharge_station TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.rule_failures TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.strategy TO '@VIEWER_USER@'@'@HOST@';

@@ -16,14 +16,17 @@ proactive_create_users() {
 	local host="${PROACTIVE_DB_HOST:-%}"
 	local engine_password="${ENGINE_DB_PASSWORD:?set ENGINE_DB_PASSWORD (see .env.example)}"
 	local robot_password="${ROBOT_DB_PASSWORD:?set ROBOT_DB_PASSWORD (see .env.example)}"
+	# the viewer (`watch`, SELECT only) is optional: no VIEWER_DB_PASSWORD, no viewer user
+	local viewer_user="${VIEWER_DB_USER:-proactive_viewer}"
+	local viewer_password="${VIEWER_DB_PASSWORD:-}"
 	local value
-	for value in "$engine_password" "$robot_password"; do
+	for value in "$engine_password" "$robot_password" "$viewer_password"; do
 		# the values go inside '...' literals: refuse what would end or escape one
 		case "$value" in
 			*"'"* | *'\'*) echo "02-users.sh: a password must not contain ' or \\" >&2; return 1 ;;
 		esac
 	done
-	for value in "$database" "$engine_user" "$robot_user"; do
+	for value in "$database" "$engine_user" "$robot_user" "$viewer_user"; do
 		if [[ ! "$value" =~ ^[A-Za-z0-9_]+$ ]]; then
 			echo "02-users.sh: database and user names are letters, digits and _: $value" >&2
 			return 1
@@ -34,7 +37,11 @@ proactive_create_users() {
 		return 1
 	fi
 	local sql
-	sql="$(cat "$template")" || return 1
+	if [[ -n "$viewer_password" ]]; then
+		sql="$(cat "$template")" || return 1
+	else
+		sql="$(grep -v '@VIEWER_' "$template")" || return 1
+	fi
 	# quoted replacements: a password may hold & or other pattern characters
 	sql="${sql//@DATABASE@/"$database"}"
 	sql="${sql//@HOST@/"$host"}"
@@ -42,8 +49,10 @@ proactive_create_users() {
 	sql="${sql//@ENGINE_PASSWORD@/"$engine_password"}"
 	sql="${sql//@ROBOT_USER@/"$robot_user"}"
 	sql="${sql//@ROBOT_PASSWORD@/"$robot_password"}"
+	sql="${sql//@VIEWER_USER@/"$viewer_user"}"
+	sql="${sql//@VIEWER_PASSWORD@/"$viewer_password"}"
 	docker_process_sql <<<"$sql" || return 1
-	echo "02-users.sh: users $engine_user and $robot_user granted on $database"
+	echo "02-users.sh: users $engine_user and $robot_user${viewer_password:+ and $viewer_user} granted on $database"
 }
 
 proactive_create_users

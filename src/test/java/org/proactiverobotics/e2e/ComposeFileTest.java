@@ -22,7 +22,7 @@ class ComposeFileTest {
 
     @Test
     void mysqlEngineAndRobotServicesOnPinnedImages() {
-        assertThat(compose.services()).containsOnlyKeys("mysql", "engine", "robot");
+        assertThat(compose.services()).containsOnlyKeys("mysql", "engine", "robot", "watch");
         assertThat(compose.service("mysql").image()).matches("mysql:8\\.4\\.\\d+");
         assertThat(compose.service("engine").image()).isEqualTo("eclipse-temurin:17-jre");
         assertThat(compose.service("robot").image()).isEqualTo("eclipse-temurin:17-jre");
@@ -30,7 +30,7 @@ class ComposeFileTest {
 
     @Test
     void everyServiceHasAHealthCheckAndTheProcessesWaitForAHealthyDatabase() {
-        for (String name : List.of("mysql", "engine", "robot")) {
+        for (String name : List.of("mysql", "engine", "robot", "watch")) {
             assertThat(compose.service(name).healthcheck()).as(name).containsKeys("test", "interval", "retries");
         }
         assertThat(String.valueOf(compose.service("mysql").healthcheck().get("test")))

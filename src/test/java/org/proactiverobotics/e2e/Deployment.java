@@ -33,6 +33,7 @@ final class Deployment implements AutoCloseable {
     /** The password both test users get (the users are unique per database, dropped at the end). */
     static final String ENGINE_PASSWORD = "engine-Pw&1";
     static final String ROBOT_PASSWORD = "robot-Pw&2";
+    static final String VIEWER_PASSWORD = "viewer-Pw&3";
 
     private static final Pattern URL = Pattern.compile("jdbc:(?:mariadb|mysql)://([^:/?]+)(?::(\\d+))?/([^?]*)(\\?.*)?");
 
@@ -44,6 +45,7 @@ final class Deployment implements AutoCloseable {
     final String database;
     final String engineUser;
     final String robotUser;
+    final String viewerUser;
     private final List<Process> processes = new ArrayList<>();
 
     private Deployment(String adminUrl) {
@@ -61,6 +63,7 @@ final class Deployment implements AutoCloseable {
         this.database = "proactive_dep_" + unique;
         this.engineUser = "pe_" + unique;
         this.robotUser = "pr_" + unique;
+        this.viewerUser = "pv_" + unique;
     }
 
     /** A fresh database with the compose init scripts applied; skips the test without MariaDB or a mysql client. */
@@ -101,6 +104,8 @@ final class Deployment implements AutoCloseable {
                 env.put("ROBOT_DB_PASSWORD", ROBOT_PASSWORD);
                 env.put("ENGINE_DB_USER", engineUser);
                 env.put("ROBOT_DB_USER", robotUser);
+                env.put("VIEWER_DB_PASSWORD", VIEWER_PASSWORD);
+                env.put("VIEWER_DB_USER", viewerUser);
                 env.put("PROACTIVE_USERS_SQL", root().resolve("deploy/users.sql").toString());
                 run(List.of("bash", "-c", shim, "init", script.toString()), null, env);
             }
@@ -152,6 +157,7 @@ final class Deployment implements AutoCloseable {
         for (int i = 0; i < args.size(); i++) {
             args.set(i, args.get(i).replace("jdbc:mysql://mysql:3306/proactive", url())
                     .replace("proactive_engine", engineUser).replace("proactive_robot", robotUser)
+                    .replace("proactive_viewer", viewerUser)
                     .replace("/app/worlds/", root().resolve("worlds") + "/"));
         }
         for (Map.Entry<String, String> o : options.entrySet()) {
@@ -167,7 +173,8 @@ final class Deployment implements AutoCloseable {
         }
         command.addAll(args);
         ProcessBuilder pb = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(log.toFile());
-        pb.environment().put("PROACTIVE_DB_PASSWORD", service.equals("engine") ? ENGINE_PASSWORD : ROBOT_PASSWORD);
+        pb.environment().put("PROACTIVE_DB_PASSWORD", service.equals("engine") ? ENGINE_PASSWORD
+                : service.equals("watch") ? VIEWER_PASSWORD : ROBOT_PASSWORD);
         pb.environment().remove("PROACTIVE_LOG_LEVEL");
         Process p = pb.start();
         processes.add(p);
@@ -220,7 +227,7 @@ final class Deployment implements AutoCloseable {
         }
         try (Connection c = DriverManager.getConnection(adminUrl); Statement s = c.createStatement()) {
             s.execute("DROP DATABASE IF EXISTS " + database);
-            s.execute("DROP USER IF EXISTS '" + engineUser + "'@'%', '" + robotUser + "'@'%'");
+            s.execute("DROP USER IF EXISTS '" + engineUser + "'@'%', '" + robotUser + "'@'%', '" + viewerUser + "'@'%'");
         }
     }
 

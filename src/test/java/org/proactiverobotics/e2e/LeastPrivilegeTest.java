@@ -103,9 +103,30 @@ class LeastPrivilegeTest {
     }
 
     @Test
+    void theViewerMayReadWhatWatchShowsAndNothingElseNorWriteAnything() throws Exception {
+        for (String table : List.of("engine_comments", "gps_stored_values", "iudata", "distance_sensor_data",
+                "battery_level", "checkpoints", "recharge_station", "rule_failures", "strategy")) {
+            asViewer("SELECT COUNT(*) FROM " + table);
+        }
+        for (String sql : List.of("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command)"
+                        + " VALUES (1, 1, 0, 'X', 'STOP')", "DELETE FROM strategy", "UPDATE checkpoints SET reached = TRUE",
+                "INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 0, 0, 0)",
+                "SELECT * FROM engine_state", "SELECT * FROM sensor_requests", "DROP TABLE engine_comments",
+                "CREATE TABLE intruder (id INT)", "GRANT SELECT ON strategy TO '" + deployment.robotUser + "'@'%'")) {
+            assertThatThrownBy(() -> asViewer(sql)).as("viewer: " + sql).isInstanceOf(SQLException.class);
+        }
+    }
+
+    private void asViewer(String sql) throws SQLException {
+        deployment.executeAs(deployment.viewerUser, Deployment.VIEWER_PASSWORD, sql);
+    }
+
+    @Test
     void theDbUsersCommandGrantsExactlyWhatTheComposeInitGrants() throws Exception {
         List<String> engineGrants = grants(deployment.engineUser);
         List<String> robotGrants = grants(deployment.robotUser);
+        List<String> viewerGrants = grants(deployment.viewerUser);
+        assertThat(viewerGrants).hasSize(10); // USAGE and nine SELECTs
         assertThat(engineGrants).hasSizeGreaterThan(10);
         StringWriter err = new StringWriter();
         CommandLine cl = Main.commandLine();
@@ -114,9 +135,11 @@ class LeastPrivilegeTest {
         for (int i = 0; i < 2; i++) { // idempotent
             int code = cl.execute("db", "users", "--db", deployment.adminUrl(), "--engine-user", deployment.engineUser,
                     "--robot-user", deployment.robotUser, "--engine-password", Deployment.ENGINE_PASSWORD,
-                    "--robot-password", Deployment.ROBOT_PASSWORD);
+                    "--robot-password", Deployment.ROBOT_PASSWORD, "--viewer-user", deployment.viewerUser,
+                    "--viewer-password", Deployment.VIEWER_PASSWORD);
             assertThat(code).as(err.toString()).isZero();
         }
+        assertThat(grants(deployment.viewerUser)).containsExactlyInAnyOrderElementsOf(viewerGrants);
         assertThat(grants(deployment.engineUser)).containsExactlyInAnyOrderElementsOf(engineGrants);
         assertThat(grants(deployment.robotUser)).containsExactlyInAnyOrderElementsOf(robotGrants);
         asRobot("SELECT COUNT(*) FROM engine_clock"); // the password still works

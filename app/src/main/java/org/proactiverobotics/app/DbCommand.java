@@ -131,6 +131,14 @@ public final class DbCommand implements Runnable {
                 description = "Default: the environment variable ROBOT_DB_PASSWORD.")
         private String robotPassword;
 
+        @Option(names = "--viewer-user", paramLabel = "NAME", defaultValue = UsersScript.VIEWER_USER,
+                description = "The `watch` user (SELECT only). Default: ${DEFAULT-VALUE}.")
+        private String viewerUser;
+
+        @Option(names = "--viewer-password", paramLabel = "P", defaultValue = "${env:VIEWER_DB_PASSWORD}",
+                description = "Creates the viewer user too. Default: the environment variable VIEWER_DB_PASSWORD (none: no viewer).")
+        private String viewerPassword;
+
         @Option(names = "--host", paramLabel = "PATTERN", defaultValue = "%",
                 description = "Where the users may connect from. Default: ${DEFAULT-VALUE} (anywhere).")
         private String host;
@@ -179,7 +187,8 @@ public final class DbCommand implements Runnable {
                 for (String sql : UsersScript.statements(UsersScript.filled(values))) {
                     s.execute(sql);
                 }
-                out.println("users " + engineUser + " and " + robotUser + " granted on " + database + " (host '" + host + "')");
+                out.println("users " + engineUser + " and " + robotUser + (values.withViewer() ? " and " + viewerUser : "")
+                        + " granted on " + database + " (host '" + host + "')");
                 out.flush();
                 return 0;
             } catch (SQLException e) {
@@ -189,7 +198,8 @@ public final class DbCommand implements Runnable {
         }
 
         private UsersScript.Values values(String database) {
-            return new UsersScript.Values(database, host, engineUser, enginePassword, robotUser, robotPassword);
+            return new UsersScript.Values(database, host, engineUser, enginePassword, robotUser, robotPassword, viewerUser,
+                    viewerPassword);
         }
 
         /** The database name of a jdbc:mysql:// or jdbc:mariadb:// URL, for --print. */

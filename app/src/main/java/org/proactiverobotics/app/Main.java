@@ -20,6 +20,7 @@ import picocli.CommandLine.Command;
                 RobotCommand.class,
                 StrategyCommand.class,
                 DbCommand.class,
+                WatchCommand.class,
         })
 public final class Main implements Runnable {
 

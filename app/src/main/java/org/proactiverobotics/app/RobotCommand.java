@@ -108,9 +108,10 @@ public final class RobotCommand implements Callable<Integer> {
         stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), DbOptions.redacted(db.url()), mode.label());
         stdout.flush();
         MissionReport report;
+        RobotProcess robot = new RobotProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor,
+                process.logEvery(), process.heartbeat()), signal);
         try {
-            report = new RobotProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor, process.logEvery(),
-                    process.heartbeat()), signal).run();
+            report = robot.run();
         } catch (DatabaseWait.Unreachable e) {
             output.removeIfEmpty();
             err.println(e.getMessage());
@@ -124,6 +125,7 @@ public final class RobotCommand implements Callable<Integer> {
         }
         try {
             RunCommand.writeReport(report, outDir.resolve("report.json"));
+            robot.writeReplay(outDir.resolve("replay.html"), report);
         } catch (IOException e) {
             err.println("cannot write the report in " + outDir + ": " + e.getMessage());
             err.flush();

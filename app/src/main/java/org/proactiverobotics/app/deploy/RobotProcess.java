@@ -1,6 +1,8 @@
 package org.proactiverobotics.app.deploy;
 
 import com.zaxxer.hikari.HikariDataSource;
+import java.io.IOException;
+import java.nio.file.Path;
 import java.sql.SQLException;
 import java.util.Locale;
 import java.util.Map;
@@ -8,6 +10,12 @@ import java.util.TreeMap;
 import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.Outcome;
+import org.proactiverobotics.app.mission.ScenarioColours;
+import org.proactiverobotics.app.replay.ReplayData;
+import org.proactiverobotics.app.replay.ReplayPage;
+import org.proactiverobotics.app.replay.RobotTracer;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
 import org.proactiverobotics.robot.LoopTimes;
 import org.proactiverobotics.robot.Lockstep;
 import org.proactiverobotics.robot.Missions;
@@ -47,6 +55,7 @@ public final class RobotProcess {
 
     private final Options options;
     private final ShutdownSignal signal;
+    private final ReplayData replay = new ReplayData(Map.of());
 
     /**
      * @param options what to run
@@ -67,6 +76,7 @@ public final class RobotProcess {
         WorldSpec world = options.world();
         int robotId = options.robotId();
         Simulation sim = new Simulation(world);
+        RobotTracer tracer = new RobotTracer(sim, replay);
         if (!DatabaseWait.await(options.db(), "robot_clock", signal::stopRequested)) {
             return report(sim, Outcome.STOPPED, 0, null, Map.of(), 0);
         }
@@ -76,7 +86,10 @@ public final class RobotProcess {
         try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password());
              ProactiveController robot = new ProactiveController(sim, new JdbcRobotLink(pool), config)) {
             checkStoredMission(pool, robotId, world);
-            robot.onCommand(c -> wins.merge(c.scenario(), 1L, Long::sum));
+            robot.onCommand(c -> {
+                wins.merge(c.scenario(), 1L, Long::sum);
+                tracer.command(c);
+            });
             signal.onStop(robot::requestStop);
             Lockstep lockstep = new Lockstep(new JdbcRobotClock(pool), robotId, options.timing(),
                     () -> signal.stopRequested() || robot.stopRequested());
@@ -84,13 +97,28 @@ public final class RobotProcess {
                 return report(sim, Outcome.STOPPED, 0, robot.loopTimes(), wins, 0);
             }
             long start = System.nanoTime();
-            robot.run(new StatusGate(lockstep, sim, options));
+            robot.run(new StatusGate(lockstep, sim, options, tracer));
             double wallS = (System.nanoTime() - start) / 1e9;
             Outcome outcome = outcome(sim);
             lockstep.finish(outcome == Outcome.STOPPED ? "STOPPED" : "FINISHED");
             long iterations = lockstep.lastTick().map(t -> t.iteration()).orElse(0L);
             return report(sim, outcome, wallS, robot.loopTimes(), wins, iterations);
         }
+    }
+
+    /**
+     * Writes replay.html: what the robot knows, step by step (after {@link #run()}).
+     *
+     * @param file   where
+     * @param report the mission's report
+     * @throws IOException when it cannot be written
+     */
+    public void writeReplay(Path file, MissionReport report) throws IOException {
+        String summary = String.format(Locale.ROOT, "%s, checkpoints %d/%d, %.1f s simulated, %d collision(s), robot process",
+                report.outcome(), report.checkpointsReached(), report.checkpointsTotal(), report.simTimeS(),
+                report.collisions());
+        ReplayPage.write(file, ReplayPage.Source.ROBOT, options.world(),
+                ScenarioColours.of(RobotEngine.freshSlots(ScenarioPlugins.none())), replay, summary);
     }
 
     /** The one-process mission's checks; a robot stopped before any of them holds was stopped. */
@@ -114,23 +142,27 @@ public final class RobotProcess {
         private final Lockstep lockstep;
         private final Simulation sim;
         private final Options options;
+        private final RobotTracer tracer;
         private final long startNanos = System.nanoTime();
 
-        StatusGate(Lockstep lockstep, Simulation sim, Options options) {
+        StatusGate(Lockstep lockstep, Simulation sim, Options options, RobotTracer tracer) {
             this.lockstep = lockstep;
             this.sim = sim;
             this.options = options;
+            this.tracer = tracer;
         }
 
         @Override
         public boolean sensed(long step, long simTimeMs) {
             options.heartbeat().beat();
+            tracer.sensed();
             return lockstep.sensed(step, simTimeMs);
         }
 
         @Override
         public void stepped(long step, long simTimeMs) {
             options.heartbeat().beat();
+            tracer.stepped(lockstep.lastTick().map(t -> t.iteration()).orElse(step));
             if (step % options.logEvery() == 0) {
                 GroundTruth truth = sim.groundTruth();
                 double wallS = (System.nanoTime() - startNanos) / 1e9;

@@ -18,6 +18,8 @@ public final class UsersScript {
     public static final String ENGINE_USER = "proactive_engine";
     /** The default robot user. */
     public static final String ROBOT_USER = "proactive_robot";
+    /** The default viewer user ({@code watch}: SELECT only). */
+    public static final String VIEWER_USER = "proactive_viewer";
 
     private static final String RESOURCE = "users.sql";
     private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_]{1,32}");
@@ -32,9 +34,22 @@ public final class UsersScript {
      * @param enginePassword its password
      * @param robotUser      the robot's user name
      * @param robotPassword  its password
+     * @param viewerUser     the viewer's user name ({@code watch})
+     * @param viewerPassword its password; null or empty: no viewer user
      */
     public record Values(String database, String host, String engineUser, String enginePassword, String robotUser,
-                         String robotPassword) {
+                         String robotPassword, String viewerUser, String viewerPassword) {
+
+        /** The engine and robot users only. */
+        public Values(String database, String host, String engineUser, String enginePassword, String robotUser,
+                      String robotPassword) {
+            this(database, host, engineUser, enginePassword, robotUser, robotPassword, VIEWER_USER, null);
+        }
+
+        /** @return whether the viewer user is created too */
+        public boolean withViewer() {
+            return viewerPassword != null && !viewerPassword.isEmpty();
+        }
 
         /** @return why these values cannot go into the script, or null when they can */
         public String problem() {
@@ -45,6 +60,18 @@ public final class UsersScript {
             }
             if (engineUser.equals(robotUser)) {
                 return "the engine and the robot need two different users: " + engineUser;
+            }
+            if (withViewer()) {
+                if (viewerUser == null || !NAME.matcher(viewerUser).matches()) {
+                    return "database and user names are 1 to 32 letters, digits or '_': " + viewerUser;
+                }
+                if (viewerUser.equals(engineUser) || viewerUser.equals(robotUser)) {
+                    return "the viewer needs a user of its own: " + viewerUser;
+                }
+                if (viewerPassword.indexOf('\'') >= 0 || viewerPassword.indexOf('\\') >= 0
+                        || viewerPassword.chars().anyMatch(ch -> ch < 0x20)) {
+                    return "a password must not contain ', \\ or control characters";
+                }
             }
             if (host == null || !HOST.matcher(host).matches()) {
                 return "the host pattern is letters, digits, '.', '-', '_' or '%': " + host;
@@ -101,11 +128,18 @@ public final class UsersScript {
             body++; // the template's header
         }
         for (String line : lines.subList(body, lines.size())) {
+            if (!values.withViewer() && line.contains("@VIEWER_")) {
+                continue;
+            }
             String filled = line.replace("@DATABASE@", values.database()).replace("@HOST@", values.host())
-                    .replace("@ENGINE_USER@", values.engineUser()).replace("@ROBOT_USER@", values.robotUser());
+                    .replace("@ENGINE_USER@", values.engineUser()).replace("@ROBOT_USER@", values.robotUser())
+                    .replace("@VIEWER_USER@", values.viewerUser());
             if (!line.startsWith("--")) {
                 filled = filled.replace("@ENGINE_PASSWORD@", values.enginePassword())
                         .replace("@ROBOT_PASSWORD@", values.robotPassword());
+                if (values.withViewer()) {
+                    filled = filled.replace("@VIEWER_PASSWORD@", values.viewerPassword());
+                }
             }
             script.append(filled).append('\n');
         }

@@ -14,6 +14,9 @@ import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
+import org.proactiverobotics.app.replay.ReplayData;
+import org.proactiverobotics.app.replay.ReplayPage;
+import org.proactiverobotics.app.replay.SeenReadings;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.CommandArray;
@@ -47,10 +50,10 @@ public final class Mission {
     private final Map<String, Long> commandWins = new TreeMap<>();
     private Consumer<Simulation> stepHook = sim -> { };
     private UnaryOperator<EngineTables> engineTables = UnaryOperator.identity();
-    private TraceWriter trace;
+    private StepTracer tracer;
+    private SeenReadings seen;
     private String drivingScenario = "none";
     private Map<String, Integer> slots = Map.of();
-    private long lastDecisionSimTimeMs;
 
     /** @param options what to run */
     public Mission(MissionOptions options) {
@@ -130,7 +133,8 @@ public final class Mission {
     /** The engine's standard wiring, with this mission's robot, plug-ins, trace and table wrapper. */
     private RobotEngine.Builder engine() {
         return RobotEngine.builder().robotId(options.robotId()).drive(profile(options.world()))
-                .plugins(options.plugins()).observer(this::decided).decorate(engineTables);
+                .plugins(options.plugins()).observer(this::decided)
+                .decorate(tables -> SeenReadings.wrap(engineTables.apply(tables), r -> seen = r));
     }
 
     private MissionReport run(Simulation sim, RobotEngine engine, ProactiveController controller, Path outDir)
@@ -141,10 +145,15 @@ public final class Mission {
             commandWins.merge(command.scenario(), 1L, Long::sum);
             drivingScenario = command.scenario();
         });
+        ReplayData replay = new ReplayData(slots);
         try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"))) {
-            this.trace = traceWriter;
+            this.tracer = new StepTracer(sim, traceWriter, replay);
+            tracer.seen(seen);
+            tracer.slots(slots);
             MissionReport report = loop(sim, engine, controller);
             writePicture(options.world(), sim, outDir.resolve("trajectory.svg"));
+            ReplayPage.write(outDir.resolve("replay.html"), ReplayPage.Source.RUN, options.world(),
+                    ScenarioColours.of(slots), replay, summary(report));
             return report;
         }
     }
@@ -168,14 +177,15 @@ public final class Mission {
             long t0 = System.nanoTime();
             controller.sense();
             long t1 = System.nanoTime();
-            lastDecisionSimTimeMs = sim.simTimeMs();
             IterationSummary summary = engine.iterate();
             failures += summary.rulesFailed();
             long t2 = System.nanoTime();
             controller.act();
+            tracer.beforePhysics();
             long t3 = System.nanoTime();
             sim.step();
             long t4 = System.nanoTime();
+            tracer.afterPhysics(engine.engine().memory(), engine.engine().lastIterationFailures());
             robotNs += (t1 - t0) + (t3 - t2);
             engineNs += t2 - t1;
             physicsNs += t4 - t3;
@@ -201,7 +211,14 @@ public final class Mission {
 
     /** Every decision goes to trace.jsonl (the command it leads to is sent in the next iteration). */
     private void decided(long iteration, CommandArray suggestions, Suggestion winner) {
-        trace.decision(iteration, lastDecisionSimTimeMs, suggestions, winner);
+        tracer.decided(iteration, suggestions, winner);
+    }
+
+    /** The replay's subtitle: how the mission went, as the command line's summary says it. */
+    static String summary(MissionReport r) {
+        return String.format(java.util.Locale.ROOT, "%s, checkpoints %d/%d, %.1f s simulated, %d collision(s)%s",
+                r.outcome(), r.checkpointsReached(), r.checkpointsTotal(), r.simTimeS(), r.collisions(),
+                r.strategy() == null ? "" : ", strategy " + r.strategy());
     }
 
     private void writePicture(WorldSpec world, Simulation sim, Path file) throws IOException {

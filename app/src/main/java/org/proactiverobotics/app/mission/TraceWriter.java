@@ -1,46 +1,31 @@
 package org.proactiverobotics.app.mission;
 
-import com.google.gson.JsonObject;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.proactiverobotics.engine.CommandArray;
-import org.proactiverobotics.engine.Suggestion;
+import org.proactiverobotics.app.replay.TraceStep;
 
 /**
- * Writes trace.jsonl: one JSON object per engine decision with the CommandArray's suggestions,
- * the winner and the command sent.
+ * Writes trace.jsonl: one JSON object per engine decision (see {@link TraceStep#toJson()} and
+ * docs/report.md).
  */
 final class TraceWriter implements AutoCloseable {
 
     private final BufferedWriter out;
-    /** The first write error, reported at close: a full disk must not fail the decision rule. */
+    /** The first write error, reported at close: a full disk must not fail the mission. */
     private IOException failure;
 
     TraceWriter(Path file) throws IOException {
         this.out = Files.newBufferedWriter(file);
     }
 
-    void decision(long iteration, long simTimeMs, CommandArray suggestions, Suggestion winner) {
-        JsonObject line = new JsonObject();
-        line.addProperty("iteration", iteration);
-        line.addProperty("simTimeS", simTimeMs / 1000.0);
-        JsonObject entered = new JsonObject();
-        for (int slot = 0; slot < suggestions.size(); slot++) {
-            Suggestion s = suggestions.get(slot);
-            if (s != null) {
-                entered.addProperty(s.scenario(), s.command());
-            }
-        }
-        line.add("suggestions", entered);
-        line.addProperty("winner", winner.scenario());
-        line.addProperty("command", winner.command());
+    void write(TraceStep step) {
         if (failure != null) {
             return;
         }
         try {
-            out.write(line.toString());
+            out.write(step.toJson().toString());
             out.write('\n');
         } catch (IOException e) {
             failure = e;

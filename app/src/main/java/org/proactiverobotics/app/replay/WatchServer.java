@@ -1,0 +1,143 @@
+package org.proactiverobotics.app.replay;
+
+import com.google.gson.Gson;
+import com.google.gson.JsonObject;
+import com.sun.net.httpserver.HttpExchange;
+import com.sun.net.httpserver.HttpServer;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.nio.charset.StandardCharsets;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import org.proactiverobotics.app.mission.ScenarioColours;
+import org.proactiverobotics.sim2d.WorldSpec;
+
+/**
+ * The live view's HTTP server (the JDK's {@link HttpServer}): {@code /} is replay.html with no
+ * steps, which polls {@code /steps?from=K} for the steps from K on, as {@link LiveMission} read
+ * them. GET only; nothing it serves writes to the database.
+ */
+public final class WatchServer implements AutoCloseable {
+
+    private static final Gson GSON = new Gson();
+
+    private final HttpServer server;
+    private final ExecutorService threads = Executors.newFixedThreadPool(2, r -> {
+        Thread t = new Thread(r, "watch-http");
+        t.setDaemon(true);
+        return t;
+    });
+    private final LiveMission mission;
+    private final WorldSpec world;
+    private final int robotId;
+    private volatile String status = "";
+
+    /**
+     * Binds and starts serving.
+     *
+     * @param address where to listen
+     * @param mission what to show
+     * @param world   the world file, to draw the arena and obstacles; null: the checkpoints and station only
+     * @param robotId the robot shown
+     * @throws IOException when the address cannot be bound (a {@link java.net.BindException} when in use)
+     */
+    public WatchServer(InetSocketAddress address, LiveMission mission, WorldSpec world, int robotId) throws IOException {
+        this.mission = mission;
+        this.world = world;
+        this.robotId = robotId;
+        this.server = HttpServer.create(address, 16);
+        server.createContext("/", this::page);
+        server.createContext("/steps", this::steps);
+        server.setExecutor(threads);
+        server.start();
+    }
+
+    /** @return the bound address (the port when 0 was asked) */
+    public InetSocketAddress address() {
+        return server.getAddress();
+    }
+
+    /** @param text a status line the page shows (database trouble), empty when all is well */
+    public void status(String text) {
+        this.status = text;
+    }
+
+    private void page(HttpExchange ex) throws IOException {
+        if (!allowed(ex)) {
+            return;
+        }
+        if ("/favicon.ico".equals(ex.getRequestURI().getPath())) {
+            ex.sendResponseHeaders(204, -1); // no icon: the browser asks anyway
+            ex.close();
+            return;
+        }
+        if (!"/".equals(ex.getRequestURI().getPath()) && !"/index.html".equals(ex.getRequestURI().getPath())) {
+            send(ex, 404, "text/plain; charset=utf-8", "not found: " + ex.getRequestURI().getPath());
+            return;
+        }
+        JsonObject data = ReplayPage.header(ReplayPage.Source.WATCH, world, ScenarioColours.of(mission.slots()),
+                "robot " + robotId + ", live from the database", null);
+        data.addProperty("robotId", robotId);
+        send(ex, 200, "text/html; charset=utf-8", ReplayPage.html(data));
+    }
+
+    private void steps(HttpExchange ex) throws IOException {
+        if (!allowed(ex)) {
+            return;
+        }
+        int from = 0;
+        String query = ex.getRequestURI().getQuery();
+        if (query != null) {
+            for (String pair : query.split("&")) {
+                if (pair.startsWith("from=")) {
+                    try {
+                        from = Math.max(0, Integer.parseInt(pair.substring(5)));
+                    } catch (NumberFormatException e) {
+                        send(ex, 400, "text/plain; charset=utf-8", "from must be a step number");
+                        return;
+                    }
+                }
+            }
+        }
+        ReplayData data = mission.data();
+        if (from > data.size()) {
+            from = 0; // a new run started: the page starts over
+        }
+        JsonObject part = data.toJson(from);
+        part.addProperty("status", status);
+        if (world == null && mission.mission() != null) {
+            part.add("world", mission.mission());
+        }
+        send(ex, 200, "application/json; charset=utf-8", GSON.toJson(part));
+    }
+
+    private static boolean allowed(HttpExchange ex) throws IOException {
+        if (!"GET".equals(ex.getRequestMethod()) && !"HEAD".equals(ex.getRequestMethod())) {
+            ex.getResponseHeaders().set("Allow", "GET, HEAD");
+            send(ex, 405, "text/plain; charset=utf-8", "read only: GET");
+            return false;
+        }
+        return true;
+    }
+
+    private static void send(HttpExchange ex, int code, String type, String body) throws IOException {
+        byte[] bytes = body.getBytes(StandardCharsets.UTF_8);
+        ex.getResponseHeaders().set("Content-Type", type);
+        ex.getResponseHeaders().set("Cache-Control", "no-store");
+        boolean head = "HEAD".equals(ex.getRequestMethod());
+        ex.sendResponseHeaders(code, head ? -1 : bytes.length);
+        if (!head) {
+            try (OutputStream out = ex.getResponseBody()) {
+                out.write(bytes);
+            }
+        }
+        ex.close();
+    }
+
+    @Override
+    public void close() {
+        server.stop(0);
+        threads.shutdownNow();
+    }
+}
