@@ -1,6 +1,7 @@
 package org.proactiverobotics.app.mission;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -31,6 +32,9 @@ final class StepTracer {
     private final ReplayData replay;
     private SeenReadings seen;
     private Map<String, Integer> slots = Map.of();
+    private Map<String, Integer> priorities = Map.of();
+    private int[] priorityOrder;
+    private Map<String, Integer> prioritySlots;
     private final Map<String, String> failSafeRecords = new HashMap<>();
     private final List<TraceEvent> pending = new ArrayList<>();
     private int checkpoints;
@@ -148,12 +152,19 @@ final class StepTracer {
         replay.add(step);
     }
 
+    /** Highest priority first, as the decision reads it; built again only when the PriorityArray changed. */
     private Map<String, Integer> priorities(PriorityArray array) {
-        Map<String, Integer> p = new LinkedHashMap<>();
-        slots.entrySet().stream().filter(e -> e.getValue() < array.size())
-                .sorted((a, b) -> Integer.compare(array.get(b.getValue()), array.get(a.getValue())))
-                .forEach(e -> p.put(e.getKey(), array.get(e.getValue())));
-        return p; // highest priority first, as the decision reads it
+        int[] order = array.slotsByPriority(); // the same array until a priority changes
+        if (order != priorityOrder || slots != prioritySlots) {
+            Map<String, Integer> p = new LinkedHashMap<>();
+            slots.entrySet().stream().filter(e -> e.getValue() < array.size())
+                    .sorted((a, b) -> Integer.compare(array.get(b.getValue()), array.get(a.getValue())))
+                    .forEach(e -> p.put(e.getKey(), array.get(e.getValue())));
+            priorities = Collections.unmodifiableMap(p);
+            priorityOrder = order;
+            prioritySlots = slots;
+        }
+        return priorities;
     }
 
     private static double[] scan(DistanceScan s) {

@@ -1,5 +1,7 @@
 package org.proactiverobotics.app.mission;
 
+import com.google.gson.Strictness;
+import com.google.gson.stream.JsonWriter;
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -7,17 +9,21 @@ import java.nio.file.Path;
 import org.proactiverobotics.app.replay.TraceStep;
 
 /**
- * Writes trace.jsonl: one JSON object per engine decision (see {@link TraceStep#toJson()} and
+ * Writes trace.jsonl: one JSON object per engine decision (see {@link TraceStep#line()} and
  * docs/report.md).
  */
 final class TraceWriter implements AutoCloseable {
 
     private final BufferedWriter out;
+    /** One writer for the whole file, lenient so that it takes one object per line. */
+    private final JsonWriter json;
     /** The first write error, reported at close: a full disk must not fail the mission. */
     private IOException failure;
 
     TraceWriter(Path file) throws IOException {
         this.out = Files.newBufferedWriter(file);
+        this.json = new JsonWriter(out);
+        json.setStrictness(Strictness.LENIENT);
     }
 
     void write(TraceStep step) {
@@ -25,7 +31,7 @@ final class TraceWriter implements AutoCloseable {
             return;
         }
         try {
-            out.write(step.toJson().toString());
+            step.write(json); // straight into the file's buffer: no String per line
             out.write('\n');
         } catch (IOException e) {
             failure = e;

@@ -1,10 +1,13 @@
 package org.proactiverobotics.app.replay;
 
-import com.google.gson.JsonArray;
-import com.google.gson.JsonElement;
-import com.google.gson.JsonPrimitive;
-import com.google.gson.JsonNull;
+import com.google.gson.Gson;
+import com.google.gson.GsonBuilder;
 import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
+import com.google.gson.stream.JsonWriter;
+import java.io.IOException;
+import java.io.StringWriter;
+import java.io.UncheckedIOException;
 import java.util.List;
 import java.util.Map;
 
@@ -41,70 +44,111 @@ public record TraceStep(long iteration, long simTimeMs, Map<String, String> sugg
 
     /** The version of trace.jsonl's line format; 1 had only iteration, simTimeS, suggestions, winner, command. */
     public static final int SCHEMA_VERSION = 2;
+    /** Writes an event as JsonElement.toString() would: nulls kept, no HTML escaping. */
+    private static final Gson EVENTS = new GsonBuilder().serializeNulls().disableHtmlEscaping().create();
 
     /** @return the trace.jsonl line (without the newline) */
     public JsonObject toJson() {
-        JsonObject line = new JsonObject();
-        line.addProperty("schemaVersion", SCHEMA_VERSION);
-        line.addProperty("iteration", iteration);
-        line.addProperty("simTimeS", simTimeMs / 1000.0);
-        JsonObject entered = new JsonObject();
-        if (suggestions != null) {
-            suggestions.forEach(entered::addProperty);
-        }
-        line.add("suggestions", entered);
-        line.addProperty("winner", winner);
-        line.addProperty("command", command);
-        JsonObject pa = new JsonObject();
-        if (priorities != null) {
-            priorities.forEach(pa::addProperty);
-        }
-        line.add("priorities", pa);
-        JsonObject pose = new JsonObject();
-        pose.addProperty("xM", mm(xM));
-        pose.addProperty("yM", mm(yM));
-        pose.addProperty("headingRad", mm(headingRad));
-        line.add("pose", pose);
-        JsonObject seen = new JsonObject();
-        if (Double.isNaN(gpsXM)) {
-            seen.add("gps", JsonNull.INSTANCE);
-        } else {
-            JsonObject gps = new JsonObject();
-            gps.addProperty("xM", mm(gpsXM));
-            gps.addProperty("yM", mm(gpsYM));
-            seen.add("gps", gps);
-        }
-        seen.add("headingRad", number(yawRad));
-        if (scanM == null) {
-            seen.add("scanM", JsonNull.INSTANCE);
-        } else {
-            JsonArray scan = new JsonArray(scanM.length);
-            for (double d : scanM) {
-                scan.add(number(d));
-            }
-            seen.add("scanM", scan);
-        }
-        seen.add("batteryPct", Double.isNaN(seenBattery) ? JsonNull.INSTANCE : new JsonPrimitive(hundredths(seenBattery)));
-        line.add("seen", seen);
-        line.addProperty("batteryPct", hundredths(batteryPct));
-        line.addProperty("charging", charging);
-        JsonArray wheels = new JsonArray(2);
-        wheels.add(mm(leftMps));
-        wheels.add(mm(rightMps));
-        line.add("wheelsMps", wheels);
-        JsonArray happened = new JsonArray(events.size());
-        events.forEach(e -> happened.add(e.toJson()));
-        line.add("events", happened);
-        return line;
+        return JsonParser.parseString(line()).getAsJsonObject();
     }
 
-    private static JsonElement number(double v) {
-        return Double.isFinite(v) ? new JsonPrimitive(mm(v)) : JsonNull.INSTANCE;
+    /** @return the trace.jsonl line (without the newline), written straight, with no tree in between (the hot path) */
+    public String line() {
+        StringWriter text = new StringWriter(640);
+        try {
+            write(new JsonWriter(text));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e); // a StringWriter does not fail
+        }
+        return text.toString();
+    }
+
+    /**
+     * Writes the line's object.
+     *
+     * @param w where (lenient: a NaN never reaches it, each becomes null first)
+     * @throws IOException when the writer fails
+     */
+    public void write(JsonWriter w) throws IOException {
+        w.beginObject();
+        w.name("schemaVersion").value(SCHEMA_VERSION);
+        w.name("iteration").value(iteration);
+        w.name("simTimeS").jsonValue(Decimals.of(simTimeMs, 3));
+        w.name("suggestions").beginObject();
+        if (suggestions != null) {
+            for (Map.Entry<String, String> e : suggestions.entrySet()) {
+                w.name(e.getKey()).value(e.getValue());
+            }
+        }
+        w.endObject();
+        w.name("winner").value(winner);
+        w.name("command").value(command);
+        w.name("priorities").beginObject();
+        if (priorities != null) {
+            for (Map.Entry<String, Integer> e : priorities.entrySet()) {
+                w.name(e.getKey()).value(e.getValue());
+            }
+        }
+        w.endObject();
+        w.name("pose").beginObject();
+        w.name("xM").jsonValue(mmText(xM)).name("yM").jsonValue(mmText(yM)).name("headingRad").jsonValue(mmText(headingRad));
+        w.endObject();
+        w.name("seen").beginObject();
+        w.name("gps");
+        if (Double.isNaN(gpsXM)) {
+            w.nullValue();
+        } else {
+            w.beginObject().name("xM").jsonValue(mmText(gpsXM)).name("yM").jsonValue(mmText(gpsYM)).endObject();
+        }
+        number(w.name("headingRad"), yawRad);
+        w.name("scanM");
+        if (scanM == null) {
+            w.nullValue();
+        } else {
+            w.beginArray();
+            for (double d : scanM) {
+                number(w, d);
+            }
+            w.endArray();
+        }
+        w.name("batteryPct");
+        if (Double.isNaN(seenBattery)) {
+            w.nullValue();
+        } else {
+            w.jsonValue(hundredthsText(seenBattery));
+        }
+        w.endObject();
+        w.name("batteryPct").jsonValue(hundredthsText(batteryPct));
+        w.name("charging").value(charging);
+        w.name("wheelsMps").beginArray().jsonValue(mmText(leftMps)).jsonValue(mmText(rightMps)).endArray();
+        w.name("events").beginArray();
+        for (TraceEvent e : events) {
+            EVENTS.toJson(e.toJson(), w);
+        }
+        w.endArray();
+        w.endObject();
+    }
+
+    private static void number(JsonWriter w, double v) throws IOException {
+        if (Double.isFinite(v)) {
+            w.jsonValue(mmText(v));
+        } else {
+            w.nullValue();
+        }
     }
 
     /** Three decimals: a millimetre, a milliradian; keeps the line short. */
     static double mm(double v) {
         return Math.round(v * 1000.0) / 1000.0;
+    }
+
+    /** {@link #mm} as JSON writes it, without Double.toString (the trace's top cost). */
+    private static String mmText(double v) {
+        return Decimals.of(Math.round(v * 1000.0), 3);
+    }
+
+    private static String hundredthsText(double v) {
+        return Decimals.of(Math.round(v * 100.0), 2);
     }
 
     static double hundredths(double v) {
