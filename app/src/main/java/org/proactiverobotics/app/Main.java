@@ -15,6 +15,7 @@ import picocli.CommandLine.Command;
                 CommandLine.HelpCommand.class,
                 ValidateCommand.class,
                 RunCommand.class,
+                SweepCommand.class,
                 WorldsCommand.class,
                 EngineCommand.class,
                 RobotCommand.class,
