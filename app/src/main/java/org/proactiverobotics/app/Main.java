@@ -16,6 +16,7 @@ import picocli.CommandLine.Command;
                 ValidateCommand.class,
                 RunCommand.class,
                 SweepCommand.class,
+                GenerateCommand.class,
                 WorldsCommand.class,
                 EngineCommand.class,
                 RobotCommand.class,
