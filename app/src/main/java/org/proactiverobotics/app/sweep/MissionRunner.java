@@ -76,7 +76,8 @@ public final class MissionRunner {
     public MissionResult run(SweepMission mission, Path dir) {
         long start = System.nanoTime();
         String name = "proactive_sweep_" + ProcessHandle.current().pid() + "_" + DATABASES.incrementAndGet();
-        String url = Databases.embeddedH2Url(name);
+        // H2 must not close its databases in its own shutdown hook: on Ctrl-C the running missions end first, at their next step
+        String url = Databases.embeddedH2Url(name) + ";DB_CLOSE_ON_EXIT=FALSE";
         try {
             Files.createDirectories(dir);
             Files.writeString(dir.resolve("world.json"), WorldJson.of(mission.world()), StandardCharsets.UTF_8);
