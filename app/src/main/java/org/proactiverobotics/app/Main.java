@@ -15,6 +15,8 @@ import picocli.CommandLine.Command;
                 CommandLine.HelpCommand.class,
                 ValidateCommand.class,
                 RunCommand.class,
+                SweepCommand.class,
+                GenerateCommand.class,
                 WorldsCommand.class,
                 EngineCommand.class,
                 RobotCommand.class,

@@ -21,6 +21,7 @@ import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.NoiseLevel;
 import org.proactiverobotics.app.mission.Progress;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.engine.robot.Strategy;
@@ -86,6 +87,11 @@ public final class RunCommand implements Callable<Integer> {
                     + " in --db are deleted). Default: ${DEFAULT-VALUE}.")
     private int robotId;
 
+    @Option(names = "--noise", paramLabel = "LEVEL", defaultValue = "none",
+            description = "Seeded sensor noise on GPS, inertial unit and distance sensors, drawn from the world's seed:"
+                    + " none, small or realistic. Default: ${DEFAULT-VALUE} (the world file alone).")
+    private String noise;
+
     @Option(names = "--quiet", description = "No live progress line.")
     private boolean quiet;
 
@@ -110,6 +116,14 @@ public final class RunCommand implements Callable<Integer> {
             choice = scenarios.load();
         } catch (IllegalArgumentException e) { // a plug-in or strategy that cannot be used
             err.println(e.getMessage());
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        NoiseLevel noiseLevel;
+        try {
+            noiseLevel = NoiseLevel.of(noise);
+        } catch (IllegalArgumentException e) {
+            err.println("--noise: " + e.getMessage());
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
@@ -139,7 +153,8 @@ public final class RunCommand implements Callable<Integer> {
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         String url = db != null ? db : Databases.embeddedH2Url("proactive_run_" + System.nanoTime());
         MissionOptions options = new MissionOptions(spec, url, db != null ? dbUser : "sa", db != null ? dbPassword : "",
-                Strategy.SAFETY_FIRST, robotId).withLink(layer).withScenarios(choice.plugins(), choice.strategy());
+                Strategy.SAFETY_FIRST, robotId).withLink(layer).withScenarios(choice.plugins(), choice.strategy())
+                .withNoise(noiseLevel);
         OutputDirectory output;
         try {
             output = OutputDirectory.create(outDir);
@@ -163,10 +178,11 @@ public final class RunCommand implements Callable<Integer> {
             err.println(choice.unlistedWarning());
             err.flush();
         }
-        stdout.printf(Locale.ROOT, "Mission %s on %s, strategy %s%s%n", spec.name(),
+        stdout.printf(Locale.ROOT, "Mission %s on %s, strategy %s%s%s%n", spec.name(),
                 layer == MissionOptions.Link.DIRECT ? "the direct in-process link" : db != null ? DbOptions.redacted(db) : "embedded H2",
                 choice.strategy().name(), choice.plugins().scenarios().isEmpty() ? ""
-                        : ", plug-in scenarios " + String.join(", ", choice.plugins().scenarios().keySet()));
+                        : ", plug-in scenarios " + String.join(", ", choice.plugins().scenarios().keySet()),
+                noiseLevel == NoiseLevel.NONE ? "" : ", " + noiseLevel.label() + " sensor noise");
         stdout.flush();
         MissionReport report;
         try {
@@ -214,6 +230,7 @@ public final class RunCommand implements Callable<Integer> {
         return false;
     }
 
+    /** Writes report.json as run writes it (sweep writes each mission's the same way). */
     static void writeReport(MissionReport report, Path file) throws IOException {
         Gson gson = new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create();
         Files.writeString(file, gson.toJson(report) + "\n", StandardCharsets.UTF_8);

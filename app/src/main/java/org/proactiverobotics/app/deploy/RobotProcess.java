@@ -26,6 +26,7 @@ import org.proactiverobotics.robot.link.JdbcRobotClock;
 import org.proactiverobotics.robot.link.JdbcRobotLink;
 import org.proactiverobotics.robot.link.RobotPool;
 import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.SensorNoise;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldSpec;
 import org.slf4j.Logger;
@@ -46,9 +47,16 @@ public final class RobotProcess {
      * @param realTimeFactor real-time pacing (1 = real time); unused in sync timing
      * @param logEvery       one INFO line every this many steps
      * @param heartbeat      touched while the robot steps
+     * @param noise          the sensors' noise, drawn from the world's seed
      */
     public record Options(WorldSpec world, DbOptions db, int robotId, Lockstep.Timing timing, double realTimeFactor,
-                          long logEvery, Heartbeat heartbeat) {
+                          long logEvery, Heartbeat heartbeat, SensorNoise noise) {
+
+        /** Options with perfect sensors. */
+        public Options(WorldSpec world, DbOptions db, int robotId, Lockstep.Timing timing, double realTimeFactor,
+                       long logEvery, Heartbeat heartbeat) {
+            this(world, db, robotId, timing, realTimeFactor, logEvery, heartbeat, SensorNoise.NONE);
+        }
     }
 
     private static final Logger LOG = LoggerFactory.getLogger(RobotProcess.class);
@@ -75,7 +83,7 @@ public final class RobotProcess {
     public MissionReport run() throws DatabaseWait.Unreachable {
         WorldSpec world = options.world();
         int robotId = options.robotId();
-        Simulation sim = new Simulation(world);
+        Simulation sim = new Simulation(world, options.noise());
         RobotTracer tracer = new RobotTracer(sim, replay);
         if (!DatabaseWait.await(options.db(), "robot_clock", signal::stopRequested)) {
             return report(sim, Outcome.STOPPED, 0, null, Map.of(), 0);

@@ -103,7 +103,7 @@ public final class Mission {
             Schema.apply(enginePool);
             clearRobotRows(enginePool, robotId);
 
-            Simulation sim = new Simulation(world);
+            Simulation sim = new Simulation(world, options.noise().sensorNoise());
             RobotEngine engine = engine().database(enginePool).build();
             engine.startFresh();
             engine.writeStrategy(options.strategy());
@@ -121,7 +121,7 @@ public final class Mission {
         int robotId = options.robotId();
         DirectLink link = new DirectLink();
         DirectEngineTables tables = link.engine(robotId);
-        Simulation sim = new Simulation(world);
+        Simulation sim = new Simulation(world, options.noise().sensorNoise());
         RobotEngine engine = engine().tables(EngineTables.of(tables, tables::pruneHistory), StateStore.none()).build();
         engine.startFresh();
         engine.writeStrategy(options.strategy());

@@ -16,9 +16,10 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * @param robotId  the robot's id in the shared tables
  * @param link     how the engine and the robot talk
  * @param plugins  scenarios from outside, started after the built-in ones that suggest
+ * @param noise    the sensors' noise, drawn from the world's seed
  */
 public record MissionOptions(WorldSpec world, String jdbcUrl, String user, String password, Strategy strategy, int robotId,
-                             Link link, ScenarioPlugins plugins) {
+                             Link link, ScenarioPlugins plugins, NoiseLevel noise) {
 
     /** The communication layer between the engine and the robot. */
     public enum Link {
@@ -33,6 +34,13 @@ public record MissionOptions(WorldSpec world, String jdbcUrl, String user, Strin
         Objects.requireNonNull(strategy, "strategy");
         Objects.requireNonNull(link, "link");
         Objects.requireNonNull(plugins, "plugins");
+        Objects.requireNonNull(noise, "noise");
+    }
+
+    /** Options without sensor noise. */
+    public MissionOptions(WorldSpec world, String jdbcUrl, String user, String password, Strategy strategy, int robotId,
+                          Link link, ScenarioPlugins plugins) {
+        this(world, jdbcUrl, user, password, strategy, robotId, link, plugins, NoiseLevel.NONE);
     }
 
     /** A mission through the shared database, with a bundled strategy and no plug-ins. */
@@ -42,11 +50,26 @@ public record MissionOptions(WorldSpec world, String jdbcUrl, String user, Strin
 
     /** @return these options over another link */
     public MissionOptions withLink(Link other) {
-        return new MissionOptions(world, jdbcUrl, user, password, strategy, robotId, other, plugins);
+        return new MissionOptions(world, jdbcUrl, user, password, strategy, robotId, other, plugins, noise);
     }
 
     /** @return these options with these plug-ins and this strategy */
     public MissionOptions withScenarios(ScenarioPlugins others, Strategy otherStrategy) {
-        return new MissionOptions(world, jdbcUrl, user, password, otherStrategy, robotId, link, others);
+        return new MissionOptions(world, jdbcUrl, user, password, otherStrategy, robotId, link, others, noise);
+    }
+
+    /** @return these options with this sensor noise */
+    public MissionOptions withNoise(NoiseLevel level) {
+        return new MissionOptions(world, jdbcUrl, user, password, strategy, robotId, link, plugins, level);
+    }
+
+    /** @return these options in another world (the same mission elsewhere, or with another seed) */
+    public MissionOptions withWorld(WorldSpec other) {
+        return new MissionOptions(other, jdbcUrl, user, password, strategy, robotId, link, plugins, noise);
+    }
+
+    /** @return these options on another database */
+    public MissionOptions withDatabase(String otherJdbcUrl, String otherUser, String otherPassword) {
+        return new MissionOptions(world, otherJdbcUrl, otherUser, otherPassword, strategy, robotId, link, plugins, noise);
     }
 }

@@ -1,0 +1,111 @@
+package org.proactiverobotics.app;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.stream.Stream;
+import org.proactiverobotics.app.generate.Solvability;
+import org.proactiverobotics.app.generate.WorldGenerator;
+import org.proactiverobotics.app.sweep.WorldJson;
+import org.proactiverobotics.sim2d.WorldSpec;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code generate}: N world files of a kind drawn from a seed, each valid and checked solvable by a
+ * grid planner before it is written (a folder to give {@code sweep --worlds}).
+ */
+@Command(name = "generate",
+        mixinStandardHelpOptions = true,
+        description = {"Writes N world files of a kind, drawn from a seed, each valid and checked solvable by a grid planner"
+                + " (every checkpoint reachable in order, the battery enough with recharges) before it is written.",
+                "Exit codes: 0 written, 2 bad input (nothing written), 3 the files could not be written."})
+public final class GenerateCommand implements Callable<Integer> {
+
+    @Option(names = "--kind", paramLabel = "KIND", required = true,
+            description = "cluttered, traps, corridors or battery.")
+    private String kind;
+
+    @Option(names = "--count", paramLabel = "N", required = true, description = "How many worlds (1 to 10000).")
+    private int count;
+
+    @Option(names = "--seed", paramLabel = "S", defaultValue = "1",
+            description = "The seed: the same kind, seed and count give the same files. Default: ${DEFAULT-VALUE}.")
+    private long seed;
+
+    @Option(names = "--out", paramLabel = "DIR", required = true,
+            description = "The folder to write <kind>-<NNN>.json into; must not exist or be empty.")
+    private Path out;
+
+    @Option(names = "--force", description = "Write into --out even if it is not empty.")
+    private boolean force;
+
+    @Spec
+    private CommandSpec spec;
+
+    @Override
+    public Integer call() {
+        PrintWriter err = spec.commandLine().getErr();
+        PrintWriter stdout = spec.commandLine().getOut();
+        String problem = problem();
+        if (problem != null) {
+            err.println(problem);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        WorldGenerator generator = new WorldGenerator(WorldGenerator.Kind.valueOf(kind.toUpperCase(Locale.ROOT)));
+        List<WorldSpec> worlds = new ArrayList<>();
+        for (int i = 1; i <= count; i++) {
+            worlds.add(generator.world(seed, i));
+        }
+        try {
+            Files.createDirectories(out);
+            for (WorldSpec w : worlds) {
+                Files.writeString(out.resolve(w.name() + ".json"), WorldJson.of(w), StandardCharsets.UTF_8);
+            }
+        } catch (IOException e) {
+            err.println("cannot write the worlds in " + out + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
+        for (WorldSpec w : worlds) {
+            Solvability plan = Solvability.of(w);
+            stdout.printf(Locale.ROOT, "%s: %s, %s, planned path %.1f m, %s, maxSimTimeS %.0f%n",
+                    out.resolve(w.name() + ".json"), Plural.of(w.obstacles().size(), "obstacle"),
+                    Plural.of(w.checkpoints().size(), "checkpoint"), plan.lengthM(),
+                    Plural.of(plan.recharges(), "recharge"), w.maxSimTimeS());
+        }
+        stdout.flush();
+        return 0;
+    }
+
+    private String problem() {
+        if (!WorldGenerator.Kind.labels().contains(kind)) {
+            return "--kind must be one of " + String.join(", ", WorldGenerator.Kind.labels()) + ": " + kind;
+        }
+        if (count < 1 || count > 10_000) {
+            return "--count must be from 1 to 10000: " + count;
+        }
+        if (Files.exists(out)) {
+            if (!Files.isDirectory(out)) {
+                return "--out " + out + " is a file, not a folder";
+            }
+            try (Stream<Path> entries = Files.list(out)) {
+                if (entries.findAny().isPresent() && !force) {
+                    return "--out " + out + " exists and is not empty (give --force to write into it anyway)";
+                }
+            } catch (IOException e) {
+                return "--out " + out + ": cannot read the folder: " + e.getMessage();
+            }
+        }
+        return null;
+    }
+}

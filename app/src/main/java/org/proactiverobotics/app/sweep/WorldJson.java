@@ -1,0 +1,89 @@
+package org.proactiverobotics.app.sweep;
+
+import com.google.gson.GsonBuilder;
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
+import org.proactiverobotics.sim2d.WorldSpec;
+
+/**
+ * A {@link WorldSpec} as a world file (docs/world-file.md), every key written out: what
+ * {@code generate} writes and what {@code sweep} leaves in each mission's folder, so that
+ * {@code run --world .../world.json} runs the same mission again.
+ */
+public final class WorldJson {
+
+    private WorldJson() {
+    }
+
+    /**
+     * @param world the world
+     * @return its world file, pretty-printed, ending with a newline
+     */
+    public static String of(WorldSpec world) {
+        JsonObject root = new JsonObject();
+        root.addProperty("name", world.name());
+        root.addProperty("timeStepMs", world.timeStepMs());
+        root.addProperty("maxSimTimeS", world.maxSimTimeS());
+        root.addProperty("seed", world.seed());
+        JsonObject arena = new JsonObject();
+        arena.addProperty("radiusM", world.arena().radiusM());
+        root.add("arena", arena);
+        WorldSpec.Robot r = world.robot();
+        JsonObject robot = new JsonObject();
+        robot.addProperty("x", r.x());
+        robot.addProperty("y", r.y());
+        robot.addProperty("headingDeg", r.headingDeg());
+        robot.addProperty("radiusM", r.radiusM());
+        robot.addProperty("maxSpeedMps", r.maxSpeedMps());
+        robot.addProperty("sensorRangeM", r.sensorRangeM());
+        root.add("robot", robot);
+        JsonArray obstacles = new JsonArray();
+        for (WorldSpec.Obstacle o : world.obstacles()) {
+            JsonObject ob = new JsonObject();
+            ob.addProperty("shape", o.shape());
+            ob.addProperty("x", o.x());
+            ob.addProperty("y", o.y());
+            if (o.isCircle()) {
+                ob.addProperty("radiusM", o.radiusM());
+            } else {
+                ob.addProperty("widthM", o.widthM());
+                ob.addProperty("heightM", o.heightM());
+                ob.addProperty("angleDeg", o.angleDeg());
+            }
+            obstacles.add(ob);
+        }
+        root.add("obstacles", obstacles);
+        JsonArray checkpoints = new JsonArray();
+        for (WorldSpec.Checkpoint c : world.checkpoints()) {
+            JsonObject cp = new JsonObject();
+            cp.addProperty("x", c.x());
+            cp.addProperty("y", c.y());
+            checkpoints.add(cp);
+        }
+        root.add("checkpoints", checkpoints);
+        root.addProperty("checkpointRadiusM", world.checkpointRadiusM());
+        JsonObject station = new JsonObject();
+        station.addProperty("x", world.rechargeStation().x());
+        station.addProperty("y", world.rechargeStation().y());
+        station.addProperty("radiusM", world.rechargeStation().radiusM());
+        root.add("rechargeStation", station);
+        WorldSpec.Battery b = world.battery();
+        JsonObject battery = new JsonObject();
+        battery.addProperty("initial", b.initial());
+        battery.addProperty("drainPerMeter", b.drainPerMeter());
+        battery.addProperty("rechargeTo", b.rechargeTo());
+        battery.addProperty("rechargeRatePerS", b.rechargeRatePerS());
+        root.add("battery", battery);
+        return new GsonBuilder().setPrettyPrinting().create().toJson(root) + "\n";
+    }
+
+    /**
+     * @param world a world
+     * @param seed  another seed
+     * @return the same world drawing its noise from that seed
+     */
+    public static WorldSpec withSeed(WorldSpec world, long seed) {
+        return new WorldSpec(world.name(), world.timeStepMs(), world.maxSimTimeS(), seed, world.arena(), world.robot(),
+                world.obstacles(), world.checkpoints(), world.checkpointRadiusM(), world.rechargeStation(), world.battery());
+    }
+}
