@@ -146,6 +146,8 @@ final class Deployment implements AutoCloseable {
     Process start(String service, Map<String, String> options, Path log) throws IOException {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        // a process logs as the jar does (its logback.xml), not as the test JVM (logback-test.xml quiets the robot)
+        command.add("-Dlogback.configurationFile=logback.xml");
         command.add("-cp");
         command.add(System.getProperty("java.class.path"));
         command.add(Main.class.getName());

@@ -86,7 +86,7 @@ class SweepCommandTest extends CommandLineTest {
                 .isNotEqualTo(deterministic(two.resolve("0002-reference-arena-safety-first-small-s1/report.json")));
 
         String summary = Files.readString(two.resolve("summary.html"));
-        assertThat(summary).contains("0003-short-limit-safety-first-none-s7/trajectory.svg", "short-limit", "TIME_LIMIT")
+        assertThat(summary).contains("0003-short-limit-safety-first-none-s7/replay.html", "short-limit", "TIME_LIMIT")
                 .doesNotContain("<script src", "<link ", "src=\"http", "href=\"http", "url(http", "@import");
     }
 
