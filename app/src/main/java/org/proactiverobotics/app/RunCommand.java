@@ -38,13 +38,13 @@ import picocli.CommandLine.Spec;
 /**
  * {@code run}: the headless mission in one process (docs/command-line.md): engine, robot controller
  * and simulator in lockstep through a database, embedded H2 unless {@code --db} names another.
- * Writes report.json, trace.jsonl and trajectory.svg. Input is checked before anything is
+ * Writes report.json, trace.jsonl, replay.html and trajectory.svg. Input is checked before anything is
  * written: a bad world or option leaves no output directory.
  */
 @Command(name = "run",
         mixinStandardHelpOptions = true,
         description = {"Runs a headless mission: the proactive engine drives the simulated robot through a shared database.",
-                "Writes report.json, trace.jsonl and trajectory.svg to the output directory.",
+                "Writes report.json, trace.jsonl, replay.html and trajectory.svg to the output directory.",
                 "Exit codes: 0 mission accomplished, 1 mission failed, 2 bad input, 3 infrastructure failure."})
 public final class RunCommand implements Callable<Integer> {
 
