@@ -220,10 +220,10 @@ public final class EngineLoop {
         }
     }
 
-    /** Short polls while the robot is busy stepping, longer ones when it is away. */
+    /** Back-to-back polls while the robot is busy stepping (a step costs round trips, not sleeps), longer ones when it is away. */
     private void idle() {
         long polls = ++idlePolls;
-        long nanos = polls < 8 ? 250_000 : polls < 1_000 ? 1_000_000 : polls < 2_000 ? 10_000_000 : 50_000_000;
+        long nanos = polls < 2_000 ? 20_000 : polls < 3_000 ? 1_000_000 : polls < 4_000 ? 10_000_000 : 50_000_000;
         LockSupport.parkNanos(nanos);
     }
 
