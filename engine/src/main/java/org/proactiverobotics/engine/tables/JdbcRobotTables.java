@@ -17,9 +17,9 @@ import org.proactiverobotics.engine.IterationTransaction;
  * (MySQL mode), MariaDB and MySQL 8 all run; every read goes through a {@code robot_id} index.
  *
  * <p>Over an {@link IterationTransaction}, during an iteration, the rules' reads are served from
- * an {@link IterationSnapshot} read in one query the first time a rule reads, and the rules'
- * writes (requests, marks, commands) are kept and sent as batches on the iteration's connection
- * just before it commits: a constant, small number of round trips per iteration whatever the
+ * an {@link IterationSnapshot} read in one query the first time a rule reads, the rules'
+ * requests and marks are kept and sent as batches on the iteration's connection just before it
+ * commits, and the iteration's command goes on that connection at once: a constant, small number of round trips per iteration whatever the
  * rules ask. Outside an iteration every call is its own statement, as before.
  */
 public final class JdbcRobotTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments {
@@ -31,7 +31,6 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
     private IterationSnapshot snapshot;
     private final List<Object[]> pendingRequests = new ArrayList<>();
     private final List<Object[]> pendingMarks = new ArrayList<>();
-    private final List<Object[]> pendingCommands = new ArrayList<>();
     private long snapshotLoads;
 
     private static final String INSERT_REQUEST = "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)";
@@ -87,7 +86,6 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
         try {
             batch(c, INSERT_REQUEST, pendingRequests);
             batch(c, MARK_REACHED, pendingMarks);
-            batch(c, INSERT_COMMAND, pendingCommands);
         } finally {
             forgetIteration();
         }
@@ -96,7 +94,6 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
     private void forgetIteration() {
         pendingRequests.clear();
         pendingMarks.clear();
-        pendingCommands.clear();
         snapshot = null;
     }
 
@@ -317,10 +314,8 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
             try {
                 batch(inIteration, INSERT_REQUEST, pendingRequests); // the iteration's writes so far go first
                 batch(inIteration, MARK_REACHED, pendingMarks);
-                batch(inIteration, INSERT_COMMAND, pendingCommands);
                 pendingRequests.clear();
                 pendingMarks.clear();
-                pendingCommands.clear();
                 writeStrategy(inIteration, entries);
                 snapshot = null; // read again, with the new strategy, by the next read
             } catch (SQLException e) {
@@ -368,8 +363,16 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public void send(long iteration, long simTimeMs, String scenario, String command) {
-        if (buffering()) {
-            pendingCommands.add(new Object[] {robotId, iteration, simTimeMs, scenario, command});
+        Connection inIteration = transaction == null ? null : transaction.connection();
+        if (inIteration != null) {
+            // One command per iteration: sent now, in the iteration's transaction (buffering it saves no round
+            // trip, and its id then comes before any row another connection inserts after it, as it always did).
+            try (PreparedStatement ps = inIteration.prepareStatement(INSERT_COMMAND)) {
+                bind(ps, 1, new Object[] {robotId, iteration, simTimeMs, scenario, command});
+                ps.executeUpdate();
+            } catch (SQLException e) {
+                throw new TablesException("sending command '" + command + "' for robot " + robotId, e);
+            }
             return;
         }
         update("sending command '" + command + "'",
