@@ -1,10 +1,6 @@
 package org.proactiverobotics.engine;
 
 import java.io.PrintWriter;
-import java.lang.reflect.InvocationHandler;
-import java.lang.reflect.InvocationTargetException;
-import java.lang.reflect.Method;
-import java.lang.reflect.Proxy;
 import java.sql.Connection;
 import java.sql.SQLException;
 import java.sql.SQLFeatureNotSupportedException;
@@ -14,21 +10,31 @@ import java.util.logging.Logger;
 import javax.sql.DataSource;
 
 /**
- * One database transaction per engine iteration: a {@link DataSource} that, between
- * {@link #begin()} and {@link #commit()}, hands the iteration's thread one shared connection
- * whose own commit, rollback and close are deferred to the iteration's end. Give it to the
- * rules' tables and to the {@link JdbcStateStore}: an iteration's writes (commands, requests,
- * marks) and its saved state then commit together, once — all of an iteration or none of it
- * survives a crash, and a server that flushes its log at every commit does so once per
- * iteration. Outside an iteration, and on other threads, it is the plain pool.
+ * One database transaction per engine iteration, on one explicit connection: between
+ * {@link #begin()} and {@link #commit()} the iteration's thread gets that connection from
+ * {@link #connection()} and runs its statements on it without committing or closing it. The
+ * rules' tables and the {@link JdbcStateStore} do so: an iteration's writes (commands, requests,
+ * marks, buffered until {@link #commit()} by whoever registered {@link #beforeCommit}) and its
+ * saved state then commit together, once — all of an iteration or none of it survives a crash,
+ * and a server that flushes its log at every commit does so once per iteration.
+ * {@link #getConnection()} is always the plain pool (outside the iteration's transaction).
  */
 public final class IterationTransaction implements DataSource {
 
+    /** Work run on the iteration's connection just before it commits (buffered writes). */
+    @FunctionalInterface
+    public interface BeforeCommit {
+        /** @param c the iteration's connection, in its transaction */
+        void run(Connection c) throws SQLException;
+    }
+
     private final DataSource pool;
     private final List<Runnable> rollbackListeners = new CopyOnWriteArrayList<>();
+    private final List<BeforeCommit> beforeCommit = new CopyOnWriteArrayList<>();
     private Connection shared;
     private Thread owner;
     private boolean rollbackOnly;
+    private long number;
 
     /** @param pool the connection pool */
     public IterationTransaction(DataSource pool) {
@@ -43,6 +49,16 @@ public final class IterationTransaction implements DataSource {
      */
     public void onRollback(Runnable listener) {
         rollbackListeners.add(listener);
+    }
+
+    /**
+     * Registers work to run on the iteration's connection at {@link #commit()}, before the commit
+     * itself, in the order registered (writes buffered during the iteration go as batches).
+     *
+     * @param work run once per committing iteration; its failure fails the commit
+     */
+    public void beforeCommit(BeforeCommit work) {
+        beforeCommit.add(work);
     }
 
     /**
@@ -66,6 +82,26 @@ public final class IterationTransaction implements DataSource {
         shared = c;
         owner = Thread.currentThread();
         rollbackOnly = false;
+        number++;
+    }
+
+    /**
+     * @return the open iteration's connection when called on the iteration's thread, else null
+     *         (run the statement on a pooled connection of its own). Never commit or close it.
+     */
+    public Connection connection() {
+        Connection c = shared;
+        return c != null && Thread.currentThread() == owner ? c : null;
+    }
+
+    /** @return a number that changes with every {@link #begin()}: what a per-iteration cache is keyed by */
+    public long iterationNumber() {
+        return number;
+    }
+
+    /** A part of the iteration failed its own unit of work: nothing of the iteration will commit. */
+    public void markRollbackOnly() {
+        rollbackOnly = true;
     }
 
     private static void closeQuietly(Connection c) {
@@ -79,12 +115,24 @@ public final class IterationTransaction implements DataSource {
     }
 
     /**
-     * Commits the iteration (or rolls it back when a part of it asked to) and releases the
-     * connection.
+     * Runs the before-commit work, commits the iteration (or rolls it back when a part of it
+     * asked to) and releases the connection.
      *
-     * @throws SQLException when the commit fails; the iteration's writes are then lost
+     * @throws SQLException when the before-commit work or the commit fails; the iteration's
+     *         writes are then lost
      */
     public void commit() throws SQLException {
+        Connection c = shared;
+        if (c != null && !rollbackOnly) {
+            try {
+                for (BeforeCommit work : beforeCommit) {
+                    work.run(c);
+                }
+            } catch (SQLException | RuntimeException e) {
+                rollback();
+                throw e;
+            }
+        }
         end(!rollbackOnly);
     }
 
@@ -124,58 +172,15 @@ public final class IterationTransaction implements DataSource {
         }
     }
 
+    /** @return a pooled connection of its own, outside any iteration's transaction */
     @Override
     public Connection getConnection() throws SQLException {
-        Connection c = shared;
-        if (c != null && Thread.currentThread() == owner) {
-            return (Connection) Proxy.newProxyInstance(Connection.class.getClassLoader(),
-                    new Class<?>[] {Connection.class}, new Deferring(c));
-        }
         return pool.getConnection();
     }
 
     @Override
     public Connection getConnection(String username, String password) throws SQLException {
         return pool.getConnection(username, password);
-    }
-
-    /** Passes everything to the shared connection but what would end its transaction. */
-    private final class Deferring implements InvocationHandler {
-        private final Connection target;
-
-        Deferring(Connection target) {
-            this.target = target;
-        }
-
-        @Override
-        public Object invoke(Object proxy, Method method, Object[] args) throws Throwable {
-            switch (method.getName()) {
-                case "close", "commit", "setAutoCommit":
-                    return null;
-                case "rollback":
-                    if (args == null) {
-                        rollbackOnly = true; // a part of the iteration failed its own unit: none of it commits
-                        return null;
-                    }
-                    break;
-                case "getAutoCommit":
-                    return false;
-                case "isClosed":
-                    return shared != target;
-                case "unwrap":
-                    if (args[0] == Connection.class) {
-                        return target;
-                    }
-                    break;
-                default:
-                    break;
-            }
-            try {
-                return method.invoke(target, args);
-            } catch (InvocationTargetException e) {
-                throw e.getCause();
-            }
-        }
     }
 
     @Override

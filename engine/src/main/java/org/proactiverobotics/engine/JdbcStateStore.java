@@ -27,6 +27,8 @@ public final class JdbcStateStore implements StateStore {
     private static final int BATCH = 1_000;
 
     private final DataSource dataSource;
+    /** The iteration's transaction when the data source is one, else null. */
+    private final IterationTransaction transaction;
     private final StateCodec codec;
     /** Per robot, "type NUL json" of each queue row as last committed; absent = unknown, read the table. */
     private final Map<Integer, List<String>> savedRows = new ConcurrentHashMap<>();
@@ -40,7 +42,8 @@ public final class JdbcStateStore implements StateStore {
     public JdbcStateStore(DataSource dataSource, StateCodec codec) {
         this.dataSource = Objects.requireNonNull(dataSource);
         this.codec = Objects.requireNonNull(codec);
-        if (dataSource instanceof IterationTransaction transaction) {
+        this.transaction = dataSource instanceof IterationTransaction t ? t : null;
+        if (transaction != null) {
             transaction.onRollback(savedRows::clear);
         }
     }
@@ -147,6 +150,21 @@ public final class JdbcStateStore implements StateStore {
     @Override
     public void save(int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory, List<RuleFailure> failures) {
         List<String> previous = savedRows.remove(robotId); // a failed save leaves nothing believed saved
+        Connection inIteration = transaction == null ? null : transaction.connection();
+        if (inIteration != null) {
+            try {
+                savedRows.put(robotId, save(inIteration, robotId, iteration, nextQueue, memory, failures, previous));
+                return; // committed with the iteration (a rollback of it clears savedRows)
+            } catch (SQLException | RuntimeException e) {
+                transaction.markRollbackOnly();
+                savedRows.remove(robotId);
+                if (e instanceof SQLException sql) {
+                    throw new StateStoreException("could not save the engine state of robot_id=" + robotId
+                            + " after iteration " + iteration + ": " + sql.getMessage(), sql);
+                }
+                throw (RuntimeException) e;
+            }
+        }
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
             try {

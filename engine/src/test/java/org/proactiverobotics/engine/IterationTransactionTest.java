@@ -15,11 +15,16 @@ import org.proactiverobotics.db.TestDatabases;
 /** One transaction per iteration: all of an iteration's writes commit together, or none. */
 class IterationTransactionTest {
 
-    private static void insertCommand(javax.sql.DataSource ds, String command) throws SQLException {
-        try (Connection c = ds.getConnection(); PreparedStatement ps = c.prepareStatement(
-                "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 1, 0, 'T', ?)")) {
-            ps.setString(1, command);
-            ps.executeUpdate();
+    /** As the engine's tables do: on the iteration's connection when one is open, else on a pooled one. */
+    private static void insertCommand(IterationTransaction tx, String command) throws SQLException {
+        Connection inIteration = tx.connection();
+        try (Connection own = inIteration == null ? tx.getConnection() : null) {
+            Connection c = inIteration != null ? inIteration : own;
+            try (PreparedStatement ps = c.prepareStatement(
+                    "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 1, 0, 'T', ?)")) {
+                ps.setString(1, command);
+                ps.executeUpdate();
+            }
         }
     }
 
@@ -46,10 +51,7 @@ class IterationTransactionTest {
             IterationTransaction tx = new IterationTransaction(db.dataSource());
             tx.begin();
             insertCommand(tx, "STOP");
-            try (Connection c = tx.getConnection()) { // as JdbcStateStore does on a failed save
-                c.setAutoCommit(false);
-                c.rollback();
-            }
+            tx.markRollbackOnly(); // as JdbcStateStore does on a failed save
             tx.commit();
             assertThat(db.count("engine_comments")).isZero();
             tx.begin();
@@ -94,13 +96,14 @@ class IterationTransactionTest {
             AtomicBoolean plain = new AtomicBoolean();
             Thread other = new Thread(() -> {
                 try (Connection c = tx.getConnection()) {
-                    plain.set(c.getAutoCommit());
+                    plain.set(tx.connection() == null && c.getAutoCommit());
                 } catch (SQLException e) {
                     throw new IllegalStateException(e);
                 }
             });
             other.start();
             other.join();
+            assertThat(tx.connection()).as("the iteration's own thread gets its connection").isNotNull();
             tx.rollback();
             assertThat(plain).isTrue();
         }

@@ -170,11 +170,14 @@ public final class Lockstep implements StepGate {
         }
     }
 
-    /** Short polls while the engine is quick (an iteration takes about a millisecond), longer when it is away. */
+    /**
+     * Back-to-back polls while the engine is quick (an iteration is a few round trips): a step
+     * then costs round trips, not sleeps; longer pauses once it is away.
+     */
     private static void pause(long waitedNanos, int polls) {
         long nanos;
-        if (polls < 8) {
-            nanos = 250_000;
+        if (waitedNanos < TimeUnit.MILLISECONDS.toNanos(50)) {
+            nanos = 20_000;
         } else if (waitedNanos < TimeUnit.SECONDS.toNanos(1)) {
             nanos = 1_000_000;
         } else if (waitedNanos < TimeUnit.SECONDS.toNanos(10)) {

@@ -57,6 +57,8 @@ public final class EngineLoop {
     private long nextStatusNanos;
     private long nextTickNanos;
     private long idlePolls;
+    /** In real-time timing, how long until the next iteration is due (0: not waiting for a tick). */
+    private long realTimeWaitNanos;
     private long iterationsSinceLog;
     private long iterationNanosSinceLog;
     private long failures;
@@ -140,6 +142,7 @@ public final class EngineLoop {
             }
         } else {
             if (now - nextTickNanos < 0) {
+                realTimeWaitNanos = nextTickNanos - now;
                 return false;
             }
             long period = TimeUnit.MILLISECONDS.toNanos(options.periodMs());
@@ -220,10 +223,16 @@ public final class EngineLoop {
         }
     }
 
-    /** Short polls while the robot is busy stepping, longer ones when it is away. */
+    /** Back-to-back polls while the robot is busy stepping (a step costs round trips, not sleeps), longer ones when it is away. */
     private void idle() {
+        if (realTimeWaitNanos > 0) { // real time: the next iteration is due at a known time, no need to poll before
+            long nanos = Math.min(realTimeWaitNanos, 1_000_000);
+            realTimeWaitNanos = 0;
+            LockSupport.parkNanos(nanos);
+            return;
+        }
         long polls = ++idlePolls;
-        long nanos = polls < 8 ? 250_000 : polls < 1_000 ? 1_000_000 : polls < 2_000 ? 10_000_000 : 50_000_000;
+        long nanos = polls < 2_000 ? 20_000 : polls < 3_000 ? 1_000_000 : polls < 4_000 ? 10_000_000 : 50_000_000;
         LockSupport.parkNanos(nanos);
     }
 

@@ -92,14 +92,15 @@ public final class RobotProcess {
         RobotConfig config = RobotConfig.defaults(robotId).withRealTimeFactor(sync ? 0 : options.realTimeFactor());
         Map<String, Long> wins = new TreeMap<>();
         try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password());
-             ProactiveController robot = new ProactiveController(sim, new JdbcRobotLink(pool), config)) {
+             JdbcRobotLink link = new JdbcRobotLink(pool);
+             ProactiveController robot = new ProactiveController(sim, link, config)) {
             checkStoredMission(pool, robotId, world);
             robot.onCommand(c -> {
                 wins.merge(c.scenario(), 1L, Long::sum);
                 tracer.command(c);
             });
             signal.onStop(robot::requestStop);
-            Lockstep lockstep = new Lockstep(new JdbcRobotClock(pool), robotId, options.timing(),
+            Lockstep lockstep = new Lockstep(link.clock(), robotId, options.timing(),
                     () -> signal.stopRequested() || robot.stopRequested());
             if (!lockstep.begin()) {
                 return report(sim, Outcome.STOPPED, 0, robot.loopTimes(), wins, 0);

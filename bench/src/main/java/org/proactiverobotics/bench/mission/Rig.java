@@ -11,6 +11,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.function.Supplier;
+import java.util.function.UnaryOperator;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
@@ -90,8 +91,14 @@ final class Rig implements AutoCloseable {
     /** As {@link #jdbc(WorldSpec, int, DataSource, String, String, String)}, the engine running the given algorithm. */
     static Rig jdbc(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user, String password,
                     Algorithm algorithm) throws SQLException {
+        return jdbc(world, robotId, enginePool, jdbcUrl, user, password, algorithm, UnaryOperator.identity());
+    }
+
+    /** As above, the tables the rules see wrapped (a counter of the rules' reads). */
+    static Rig jdbc(WorldSpec world, int robotId, DataSource enginePool, String jdbcUrl, String user, String password,
+                    Algorithm algorithm, UnaryOperator<EngineTables> decorate) throws SQLException {
         prepare(enginePool, robotId);
-        RobotEngine engine = start(RobotEngine.builder().database(enginePool), world, robotId, algorithm);
+        RobotEngine engine = start(RobotEngine.builder().database(enginePool).decorate(decorate), world, robotId, algorithm);
         Simulation sim = new Simulation(world);
         var robotPool = RobotPool.open(jdbcUrl, user, password);
         ProactiveController controller = new ProactiveController(sim, new JdbcRobotLink(robotPool), RobotConfig.defaults(robotId));

@@ -10,15 +10,34 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import javax.sql.DataSource;
+import org.proactiverobotics.engine.IterationTransaction;
 
 /**
  * The engine side's tables over JDBC, for one robot. Every statement is plain SQL that H2
  * (MySQL mode), MariaDB and MySQL 8 all run; every read goes through a {@code robot_id} index.
+ *
+ * <p>Over an {@link IterationTransaction}, during an iteration, the rules' reads are served from
+ * an {@link IterationSnapshot} read in one query the first time a rule reads, the rules'
+ * requests and marks are kept and sent as batches on the iteration's connection just before it
+ * commits, and the iteration's command goes on that connection at once: a constant, small number of round trips per iteration whatever the
+ * rules ask. Outside an iteration every call is its own statement, as before.
  */
 public final class JdbcRobotTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments {
 
     private final DataSource dataSource;
     private final int robotId;
+    /** The iteration's transaction when the data source is one, else null (no snapshot, no buffering). */
+    private final IterationTransaction transaction;
+    private IterationSnapshot snapshot;
+    private final List<Object[]> pendingRequests = new ArrayList<>();
+    private final List<Object[]> pendingMarks = new ArrayList<>();
+    private long snapshotLoads;
+
+    private static final String INSERT_REQUEST = "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)";
+    private static final String MARK_REACHED =
+            "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?";
+    private static final String INSERT_COMMAND =
+            "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)";
 
     /**
      * @param dataSource the shared database
@@ -27,6 +46,73 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
     public JdbcRobotTables(DataSource dataSource, int robotId) {
         this.dataSource = dataSource;
         this.robotId = robotId;
+        this.transaction = dataSource instanceof IterationTransaction t ? t : null;
+        if (transaction != null) {
+            transaction.beforeCommit(this::flush);
+            transaction.onRollback(this::forgetIteration);
+        }
+    }
+
+    /** @return how many iteration snapshots were read (one query each): a benchmark's count of logical loads */
+    public long snapshotLoads() {
+        return snapshotLoads;
+    }
+
+    /** @return the open iteration's snapshot (read now when this is the iteration's first read), or null outside one */
+    private IterationSnapshot snapshot() {
+        Connection c = transaction == null ? null : transaction.connection();
+        if (c == null) {
+            return null;
+        }
+        long iteration = transaction.iterationNumber();
+        if (snapshot == null || snapshot.iteration != iteration) {
+            try {
+                snapshot = IterationSnapshot.load(c, robotId, iteration);
+                snapshotLoads++;
+            } catch (SQLException e) {
+                throw new TablesException("reading the tables of robot " + robotId + " for the iteration", e);
+            }
+        }
+        return snapshot;
+    }
+
+    /** @return whether a write is kept for the iteration's commit (an iteration is open on this thread) */
+    private boolean buffering() {
+        return transaction != null && transaction.connection() != null;
+    }
+
+    /** The iteration's writes, one batch per statement, just before its commit. */
+    private void flush(Connection c) throws SQLException {
+        try {
+            batch(c, INSERT_REQUEST, pendingRequests);
+            batch(c, MARK_REACHED, pendingMarks);
+        } finally {
+            forgetIteration();
+        }
+    }
+
+    private void forgetIteration() {
+        pendingRequests.clear();
+        pendingMarks.clear();
+        snapshot = null;
+    }
+
+    private static void batch(Connection c, String sql, List<Object[]> rows) throws SQLException {
+        if (rows.isEmpty()) {
+            return;
+        }
+        try (PreparedStatement ps = c.prepareStatement(sql)) {
+            if (rows.size() == 1) {
+                bind(ps, 1, rows.get(0));
+                ps.executeUpdate();
+                return;
+            }
+            for (Object[] row : rows) {
+                bind(ps, 1, row);
+                ps.addBatch();
+            }
+            ps.executeBatch();
+        }
     }
 
     /** @return the robot whose rows these are */
@@ -36,6 +122,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public Optional<GpsFix> newestGps() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.gps();
+        }
         return queryOne("newest GPS reading",
                 "SELECT sim_time_ms, x_m, y_m FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
                 rs -> new GpsFix(rs.getLong(1), rs.getDouble(2), rs.getDouble(3)));
@@ -43,6 +133,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public Optional<Heading> newestHeading() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.heading();
+        }
         return queryOne("newest inertial-unit reading",
                 "SELECT sim_time_ms, yaw_rad FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
                 rs -> new Heading(rs.getLong(1), rs.getDouble(2)));
@@ -50,6 +144,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public Optional<DistanceScan> newestScan() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.scan();
+        }
         String sql = "SELECT sim_time_ms, angle_rad, distance_m, range_m FROM distance_sensor_data"
                 + " WHERE robot_id = ? AND sim_time_ms = (SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ?"
                 + " ORDER BY robot_id DESC, id DESC LIMIT 1)"
@@ -87,6 +185,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public Optional<BatteryState> newestBattery() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.battery();
+        }
         return queryOne("newest battery reading",
                 "SELECT sim_time_ms, level_pct, charging FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
                 rs -> new BatteryState(rs.getLong(1), rs.getDouble(2), rs.getBoolean(3)));
@@ -94,6 +196,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public long newestSimTimeMs(Sensor sensor) {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.newestSimTimeMs(sensor);
+        }
         String sql = switch (sensor) {
             case GPS -> "SELECT sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
             case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
@@ -111,6 +217,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
      */
     @Override
     public boolean pending(Sensor sensor) {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.pending(sensor);
+        }
         try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(
                 "SELECT sensor FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL AND sensor = ?")) {
             ps.setInt(1, robotId);
@@ -130,6 +240,12 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public void request(Sensor sensor, long iteration) {
+        if (buffering()) {
+            IterationSnapshot snap = snapshot();
+            snap.requested(sensor);
+            pendingRequests.add(new Object[] {robotId, sensor.name(), iteration});
+            return;
+        }
         update("requesting " + sensor + " data",
                 "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)", robotId, sensor.name(),
                 iteration);
@@ -137,6 +253,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public List<Checkpoint> checkpoints() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.checkpoints();
+        }
         return queryAll("checkpoints",
                 "SELECT seq, x_m, y_m, radius_m, reached FROM checkpoints WHERE robot_id = ? ORDER BY seq",
                 rs -> new Checkpoint(rs.getInt(1), rs.getDouble(2), rs.getDouble(3), rs.getDouble(4), rs.getBoolean(5)));
@@ -144,6 +264,11 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public void markReached(int seq, long simTimeMs) {
+        if (buffering()) {
+            snapshot().reached(seq);
+            pendingMarks.add(new Object[] {simTimeMs, robotId, seq});
+            return;
+        }
         update("marking checkpoint " + seq + " reached",
                 "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?",
                 simTimeMs, robotId, seq);
@@ -151,6 +276,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public Optional<Station> rechargeStation() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.station();
+        }
         return queryOne("recharge station",
                 "SELECT x_m, y_m, radius_m FROM recharge_station WHERE robot_id = ?",
                 rs -> new Station(rs.getDouble(1), rs.getDouble(2), rs.getDouble(3)));
@@ -158,6 +287,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public OptionalDouble rechargeLevelPct() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.rechargeLevelPct();
+        }
         Optional<Double> level = queryOne("recharge level",
                 "SELECT level_pct FROM battery_recharged WHERE robot_id = ?", rs -> rs.getDouble(1));
         return level.map(OptionalDouble::of).orElse(OptionalDouble.empty());
@@ -165,6 +298,10 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public List<Entry> read() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.strategy();
+        }
         return queryAll("strategy",
                 "SELECT slot, scenario, priority, strategy_name, timeout_ms FROM strategy WHERE robot_id = ? ORDER BY slot",
                 rs -> new Entry(rs.getInt(1), rs.getString(2), rs.getInt(3), rs.getString(4), rs.getLong(5)));
@@ -172,25 +309,26 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
 
     @Override
     public void write(List<Entry> entries) {
+        Connection inIteration = transaction == null ? null : transaction.connection();
+        if (inIteration != null) {
+            try {
+                batch(inIteration, INSERT_REQUEST, pendingRequests); // the iteration's writes so far go first
+                batch(inIteration, MARK_REACHED, pendingMarks);
+                pendingRequests.clear();
+                pendingMarks.clear();
+                writeStrategy(inIteration, entries);
+                snapshot = null; // read again, with the new strategy, by the next read
+            } catch (SQLException e) {
+                transaction.markRollbackOnly();
+                throw new TablesException("writing the strategy of robot " + robotId, e);
+            }
+            return;
+        }
         try (Connection c = dataSource.getConnection()) {
             boolean autoCommit = c.getAutoCommit();
             c.setAutoCommit(false);
-            try (PreparedStatement delete = c.prepareStatement("DELETE FROM strategy WHERE robot_id = ?");
-                 PreparedStatement insert = c.prepareStatement(
-                         "INSERT INTO strategy (robot_id, slot, scenario, priority, strategy_name, timeout_ms)"
-                                 + " VALUES (?, ?, ?, ?, ?, ?)")) {
-                delete.setInt(1, robotId);
-                delete.executeUpdate();
-                for (Entry e : entries) {
-                    insert.setInt(1, robotId);
-                    insert.setInt(2, e.slot());
-                    insert.setString(3, e.scenario());
-                    insert.setInt(4, e.priority());
-                    insert.setString(5, e.name());
-                    insert.setLong(6, e.timeoutMs());
-                    insert.addBatch();
-                }
-                insert.executeBatch();
+            try {
+                writeStrategy(c, entries);
                 c.commit();
             } catch (SQLException e) {
                 c.rollback();
@@ -203,8 +341,40 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
         }
     }
 
+    private void writeStrategy(Connection c, List<Entry> entries) throws SQLException {
+        try (PreparedStatement delete = c.prepareStatement("DELETE FROM strategy WHERE robot_id = ?");
+             PreparedStatement insert = c.prepareStatement(
+                     "INSERT INTO strategy (robot_id, slot, scenario, priority, strategy_name, timeout_ms)"
+                             + " VALUES (?, ?, ?, ?, ?, ?)")) {
+            delete.setInt(1, robotId);
+            delete.executeUpdate();
+            for (Entry e : entries) {
+                insert.setInt(1, robotId);
+                insert.setInt(2, e.slot());
+                insert.setString(3, e.scenario());
+                insert.setInt(4, e.priority());
+                insert.setString(5, e.name());
+                insert.setLong(6, e.timeoutMs());
+                insert.addBatch();
+            }
+            insert.executeBatch();
+        }
+    }
+
     @Override
     public void send(long iteration, long simTimeMs, String scenario, String command) {
+        Connection inIteration = transaction == null ? null : transaction.connection();
+        if (inIteration != null) {
+            // One command per iteration: sent now, in the iteration's transaction (buffering it saves no round
+            // trip, and its id then comes before any row another connection inserts after it, as it always did).
+            try (PreparedStatement ps = inIteration.prepareStatement(INSERT_COMMAND)) {
+                bind(ps, 1, new Object[] {robotId, iteration, simTimeMs, scenario, command});
+                ps.executeUpdate();
+            } catch (SQLException e) {
+                throw new TablesException("sending command '" + command + "' for robot " + robotId, e);
+            }
+            return;
+        }
         update("sending command '" + command + "'",
                 "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)",
                 robotId, iteration, simTimeMs, scenario, command);

@@ -4,6 +4,9 @@ import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import javax.sql.DataSource;
@@ -16,15 +19,38 @@ public final class JdbcRobotClock implements RobotClock {
 
     private static final String[] READING_TABLES = {"gps_stored_values", "iudata", "distance_sensor_data", "battery_level"};
 
+    /** The engine's tick, the newest command and the pending requests, in one round trip. */
+    private static final String TICK_WITH_READS = "(SELECT 1 AS k, run_id AS a, step AS b, iteration AS c, '' AS s1, '' AS s2"
+            + " FROM engine_clock WHERE robot_id = ?)"
+            + " UNION ALL (SELECT 2, id, iteration, sim_time_ms, scenario, command FROM engine_comments WHERE robot_id = ?"
+            + " ORDER BY robot_id DESC, id DESC LIMIT 1)"
+            + " UNION ALL (SELECT 3, id, 0, 0, sensor, '' FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL)";
+
     private final DataSource dataSource;
+    /** The link that takes the reads made with a sync tick, or null. */
+    private final JdbcRobotLink link;
+    private volatile boolean sync;
 
     /** @param dataSource the shared database (not closed by this clock) */
     public JdbcRobotClock(DataSource dataSource) {
+        this(dataSource, null);
+    }
+
+    /**
+     * @param dataSource the shared database (not closed by this clock)
+     * @param link       takes the newest command and the pending requests read with each sync tick, or null
+     */
+    JdbcRobotClock(DataSource dataSource, JdbcRobotLink link) {
         this.dataSource = Objects.requireNonNull(dataSource, "dataSource");
+        this.link = link;
     }
 
     @Override
     public long beginRun(int robotId, String timing) throws LinkException {
+        sync = "sync".equals(timing); // in real time the engine writes while the robot steps: nothing handed off
+        if (link != null) {
+            link.dropHandOff();
+        }
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
             try {
@@ -73,6 +99,9 @@ public final class JdbcRobotClock implements RobotClock {
 
     @Override
     public void publish(int robotId, long runId, long step, long simTimeMs, String state) throws LinkException {
+        if (link != null) {
+            link.dropHandOff(); // the engine may write once it sees this step
+        }
         try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement("UPDATE robot_clock "
                 + "SET step = ?, sim_time_ms = ?, state = ?, updated_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ? AND run_id = ?")) {
             ps.setLong(1, step);
@@ -91,12 +120,42 @@ public final class JdbcRobotClock implements RobotClock {
 
     @Override
     public Optional<EngineTick> engineTick(int robotId) throws LinkException {
+        if (link != null && sync) {
+            return tickWithReads(robotId);
+        }
         try (Connection c = dataSource.getConnection();
              PreparedStatement ps = c.prepareStatement("SELECT run_id, step, iteration FROM engine_clock WHERE robot_id = ?")) {
             ps.setInt(1, robotId);
             try (ResultSet rs = ps.executeQuery()) {
                 return rs.next() ? Optional.of(new EngineTick(rs.getLong(1), rs.getLong(2), rs.getLong(3))) : Optional.empty();
             }
+        } catch (SQLException e) {
+            throw new LinkException("reading engine_clock of robot " + robotId + " failed: " + e.getMessage(), e);
+        }
+    }
+
+    private Optional<EngineTick> tickWithReads(int robotId) throws LinkException {
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(TICK_WITH_READS)) {
+            ps.setInt(1, robotId);
+            ps.setInt(2, robotId);
+            ps.setInt(3, robotId);
+            EngineTick tick = null;
+            Optional<CommandRecord> command = Optional.empty();
+            List<SensorRequest> pending = new ArrayList<>(4);
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    switch (rs.getInt(1)) {
+                        case 1 -> tick = new EngineTick(rs.getLong(2), rs.getLong(3), rs.getLong(4));
+                        case 2 -> command = Optional.of(new CommandRecord(rs.getLong(2), rs.getLong(3), rs.getLong(4),
+                                rs.getString(5), rs.getString(6)));
+                        case 3 -> pending.add(new SensorRequest(rs.getLong(2), rs.getString(5)));
+                        default -> throw new SQLException("unknown row kind " + rs.getInt(1));
+                    }
+                }
+            }
+            pending.sort(Comparator.comparingLong(SensorRequest::id)); // as pendingRequests reads them: ORDER BY id
+            link.handOff(robotId, command, pending);
+            return Optional.ofNullable(tick);
         } catch (SQLException e) {
             throw new LinkException("reading engine_clock of robot " + robotId + " failed: " + e.getMessage(), e);
         }

@@ -39,6 +39,13 @@ public final class JdbcRobotLink implements RobotLink {
 
     private final DataSource dataSource;
     private final int queryTimeoutS;
+    /** What a sync clock read with the engine's tick, for the next read of it (each taken once); null: nothing. */
+    private volatile HandedOff handedOff;
+
+    /** The newest command and the pending requests as read with an engine tick, for one robot. */
+    private record HandedOff(int robotId, Optional<CommandRecord> command, List<SensorRequest> pending,
+                             boolean commandTaken, boolean pendingTaken) {
+    }
 
     /**
      * @param dataSource    the database (not closed by this link)
@@ -60,8 +67,35 @@ public final class JdbcRobotLink implements RobotLink {
         this(dataSource, 0);
     }
 
+    /**
+     * A clock over the same database that, in sync timing, reads the newest command and the
+     * pending requests in the same query as the engine's tick, and hands them to this link: the
+     * robot's next {@link #newestCommand} and {@link #pendingRequests} are then no round trips
+     * (nothing writes them between the engine's iteration and the robot's next step).
+     *
+     * @return the robot's clock, sharing reads with this link
+     */
+    public JdbcRobotClock clock() {
+        return new JdbcRobotClock(dataSource, this);
+    }
+
+    /** Keeps what was read with the engine's tick for the next reads (see {@link #clock()}). */
+    void handOff(int robotId, Optional<CommandRecord> command, List<SensorRequest> pending) {
+        handedOff = new HandedOff(robotId, command, List.copyOf(pending), false, false);
+    }
+
+    /** Forgets what was handed off (the robot published a step: the engine may write again). */
+    void dropHandOff() {
+        handedOff = null;
+    }
+
     @Override
     public List<SensorRequest> pendingRequests(int robotId) throws LinkException {
+        HandedOff h = handedOff;
+        if (h != null && h.robotId() == robotId && !h.pendingTaken()) {
+            handedOff = new HandedOff(robotId, h.command(), h.pending(), h.commandTaken(), true);
+            return new ArrayList<>(h.pending());
+        }
         return withConnection("reading sensor_requests", c -> {
             try (PreparedStatement ps = prepare(c, PENDING)) {
                 ps.setInt(1, robotId);
@@ -154,6 +188,11 @@ public final class JdbcRobotLink implements RobotLink {
 
     @Override
     public Optional<CommandRecord> newestCommand(int robotId) throws LinkException {
+        HandedOff h = handedOff;
+        if (h != null && h.robotId() == robotId && !h.commandTaken()) {
+            handedOff = new HandedOff(robotId, h.command(), h.pending(), true, h.pendingTaken());
+            return h.command();
+        }
         return withConnection("reading engine_comments", c -> {
             try (PreparedStatement ps = prepare(c, NEWEST_COMMAND)) {
                 ps.setInt(1, robotId);

@@ -1,0 +1,176 @@
+package org.proactiverobotics.engine.tables;
+
+import java.sql.Connection;
+import java.sql.PreparedStatement;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import java.util.Set;
+
+/**
+ * What the engine's rules read of one robot's tables during one iteration, read in one query
+ * (one round trip) the first time a rule reads anything, and kept up to date with the
+ * iteration's own writes (a request makes its sensor pending, a mark makes its checkpoint
+ * reached). In lockstep nothing else writes these rows while the iteration runs, so every rule
+ * sees what it would have read row by row; in real-time timing the iteration sees one
+ * consistent moment of the robot's writes instead of several.
+ */
+final class IterationSnapshot {
+
+    // One UNION ALL of ten columns: kind, three integers, four doubles, two strings. The "newest"
+    // subqueries keep their ORDER BY robot_id DESC, id DESC LIMIT 1 (the (robot_id, id) index, read backwards).
+    static final String SQL = "(SELECT 1 AS k, sim_time_ms AS n1, 0 AS n2, 0 AS n3, x_m AS d1, y_m AS d2, CAST(0 AS DOUBLE) AS d3,"
+            + " CAST(0 AS DOUBLE) AS d4, '' AS s1, '' AS s2 FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1)"
+            + " UNION ALL (SELECT 2, sim_time_ms, 0, 0, yaw_rad, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', '' FROM iudata WHERE robot_id = ?"
+            + " ORDER BY robot_id DESC, id DESC LIMIT 1)"
+            + " UNION ALL (SELECT 3, sim_time_ms, CASE WHEN charging THEN 1 ELSE 0 END, 0, level_pct, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', ''"
+            + " FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1)"
+            + " UNION ALL (SELECT 4, sim_time_ms, sensor_index, 0, angle_rad, distance_m, range_m, CAST(0 AS DOUBLE), '', ''"
+            + " FROM distance_sensor_data WHERE robot_id = ? AND sim_time_ms = (SELECT sim_time_ms FROM distance_sensor_data"
+            + " WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1))"
+            + " UNION ALL (SELECT 5, id, 0, 0, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), sensor, '' FROM sensor_requests"
+            + " WHERE robot_id = ? AND answered_sim_time_ms IS NULL)"
+            + " UNION ALL (SELECT 6, seq, CASE WHEN reached THEN 1 ELSE 0 END, 0, x_m, y_m, radius_m, CAST(0 AS DOUBLE), '', ''"
+            + " FROM checkpoints WHERE robot_id = ?)"
+            + " UNION ALL (SELECT 7, 0, 0, 0, x_m, y_m, radius_m, CAST(0 AS DOUBLE), '', '' FROM recharge_station WHERE robot_id = ?)"
+            + " UNION ALL (SELECT 8, 0, 0, 0, level_pct, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', '' FROM battery_recharged WHERE robot_id = ?)"
+            + " UNION ALL (SELECT 9, slot, priority, timeout_ms, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), scenario, strategy_name FROM strategy"
+            + " WHERE robot_id = ?)";
+    private static final int ROBOT_ID_PARAMETERS = 10;
+
+    final long iteration;
+    private GpsFix gps;
+    private Heading heading;
+    private BatteryState battery;
+    private DistanceScan scan;
+    /** Sensors with a request not answered yet (exact names only: see JdbcRobotTables#pending). */
+    private final Set<Sensor> pending = EnumSet.noneOf(Sensor.class);
+    private List<Checkpoint> checkpoints = new ArrayList<>();
+    private Station station;
+    private Double rechargeLevelPct;
+    private List<StrategyTable.Entry> strategy = new ArrayList<>();
+
+    private IterationSnapshot(long iteration) {
+        this.iteration = iteration;
+    }
+
+    /**
+     * @param c         the iteration's connection
+     * @param robotId   the robot
+     * @param iteration the iteration number the snapshot belongs to
+     * @return everything the rules read, as the tables hold it now
+     */
+    static IterationSnapshot load(Connection c, int robotId, long iteration) throws SQLException {
+        IterationSnapshot s = new IterationSnapshot(iteration);
+        List<double[]> ds = new ArrayList<>();
+        long dsTime = -1;
+        try (PreparedStatement ps = c.prepareStatement(SQL)) {
+            for (int i = 1; i <= ROBOT_ID_PARAMETERS; i++) {
+                ps.setInt(i, robotId);
+            }
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    switch (rs.getInt(1)) {
+                        case 1 -> s.gps = new GpsFix(rs.getLong(2), rs.getDouble(5), rs.getDouble(6));
+                        case 2 -> s.heading = new Heading(rs.getLong(2), rs.getDouble(5));
+                        case 3 -> s.battery = new BatteryState(rs.getLong(2), rs.getDouble(5), rs.getInt(3) != 0);
+                        case 4 -> {
+                            dsTime = rs.getLong(2);
+                            ds.add(new double[] {rs.getInt(3), rs.getDouble(5), rs.getDouble(6), rs.getDouble(7)});
+                        }
+                        case 5 -> {
+                            String name = rs.getString(9);
+                            for (Sensor sensor : Sensor.values()) {
+                                if (sensor.name().equals(name)) {
+                                    s.pending.add(sensor);
+                                }
+                            }
+                        }
+                        case 6 -> s.checkpoints.add(new Checkpoint(rs.getInt(2), rs.getDouble(5), rs.getDouble(6),
+                                rs.getDouble(7), rs.getInt(3) != 0));
+                        case 7 -> s.station = new Station(rs.getDouble(5), rs.getDouble(6), rs.getDouble(7));
+                        case 8 -> s.rechargeLevelPct = rs.getDouble(5);
+                        case 9 -> s.strategy.add(new StrategyTable.Entry(rs.getInt(2), rs.getString(9), rs.getInt(3),
+                                rs.getString(10), rs.getLong(4)));
+                        default -> throw new IllegalStateException("unknown snapshot row kind " + rs.getInt(1));
+                    }
+                }
+            }
+        }
+        if (!ds.isEmpty()) {
+            ds.sort((a, b) -> Double.compare(a[0], b[0]));
+            double[] angles = new double[ds.size()];
+            double[] distances = new double[ds.size()];
+            double range = 0;
+            for (int i = 0; i < ds.size(); i++) {
+                angles[i] = ds.get(i)[1];
+                distances[i] = ds.get(i)[2];
+                range = Math.max(range, ds.get(i)[3]);
+            }
+            s.scan = new DistanceScan(dsTime, angles, distances, range);
+        }
+        s.checkpoints.sort((a, b) -> Integer.compare(a.seq(), b.seq()));
+        s.strategy.sort((a, b) -> Integer.compare(a.slot(), b.slot()));
+        return s;
+    }
+
+    Optional<GpsFix> gps() {
+        return Optional.ofNullable(gps);
+    }
+
+    Optional<Heading> heading() {
+        return Optional.ofNullable(heading);
+    }
+
+    Optional<BatteryState> battery() {
+        return Optional.ofNullable(battery);
+    }
+
+    Optional<DistanceScan> scan() {
+        return scan == null ? Optional.empty() : Optional.of(new DistanceScan(scan.simTimeMs(),
+                Arrays.copyOf(scan.anglesRad(), scan.anglesRad().length),
+                Arrays.copyOf(scan.distancesM(), scan.distancesM().length), scan.rangeM()));
+    }
+
+    long newestSimTimeMs(Sensor sensor) {
+        return switch (sensor) {
+            case GPS -> gps == null ? -1 : gps.simTimeMs();
+            case IU -> heading == null ? -1 : heading.simTimeMs();
+            case DS -> scan == null ? -1 : scan.simTimeMs();
+            case BATTERY -> battery == null ? -1 : battery.simTimeMs();
+        };
+    }
+
+    boolean pending(Sensor sensor) {
+        return pending.contains(sensor);
+    }
+
+    void requested(Sensor sensor) {
+        pending.add(sensor);
+    }
+
+    List<Checkpoint> checkpoints() {
+        return new ArrayList<>(checkpoints);
+    }
+
+    void reached(int seq) {
+        checkpoints.replaceAll(cp -> cp.seq() == seq ? new Checkpoint(cp.seq(), cp.xM(), cp.yM(), cp.radiusM(), true) : cp);
+    }
+
+    Optional<Station> station() {
+        return Optional.ofNullable(station);
+    }
+
+    OptionalDouble rechargeLevelPct() {
+        return rechargeLevelPct == null ? OptionalDouble.empty() : OptionalDouble.of(rechargeLevelPct);
+    }
+
+    List<StrategyTable.Entry> strategy() {
+        return new ArrayList<>(strategy);
+    }
+}
