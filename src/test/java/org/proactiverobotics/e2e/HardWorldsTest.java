@@ -2,10 +2,13 @@ package org.proactiverobotics.e2e;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
-import com.google.gson.JsonParser;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -27,6 +30,7 @@ class HardWorldsTest {
      * A wall across the arena with one 0.6 m doorway between the start and the checkpoint, and a
      * battery that runs low while the robot follows the wall. Without a map the robot may never
      * find the doorway; whatever it does, it must go and charge in time: never a flat battery.
+     * The station is on the robot's side of the wall.
      */
     static final String DOORWAY = """
             { "name": "doorway-battery", "maxSimTimeS": 240, "seed": 3,
@@ -89,7 +93,9 @@ class HardWorldsTest {
     @Test
     void aRobotStuckOnAWallWithADoorwayStillChargesInTime() throws Exception {
         MissionReport report = run(DOORWAY);
-        assertThat(report.outcome()).isNotEqualTo(Outcome.BATTERY_DEPLETED);
+        // before the battery promise: BATTERY_DEPLETED at 69 s, never released from the wall.
+        // Now it charges, and (here, not in general without a map) then finds the doorway.
+        assertThat(report.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
         assertThat(report.minBattery()).isPositive();
         assertThat(report.recharges()).isPositive();
         assertThat(report.collisions()).isZero();
@@ -103,12 +109,11 @@ class HardWorldsTest {
         assertThat(report.minBattery()).isPositive();
     }
 
-    @ParameterizedTest(name = "random world {0} at 1.0 m/s")
-    @ValueSource(longs = {1, 2, 3})
-    void aFastRobotInClutterNeverCollides(long seed) throws Exception {
-        JsonObject world = JsonParser.parseString(RandomWorldsTest.randomWorld(seed)).getAsJsonObject();
-        world.getAsJsonObject("robot").addProperty("maxSpeedMps", 1.0);
-        MissionReport report = run(world.toString());
+    /** Dense clutter at 1.0 m/s; seed 4 clipped an obstacle with the fixed avoidance distances. */
+    @ParameterizedTest(name = "dense world {0} at 1.0 m/s")
+    @ValueSource(longs = {1, 2, 3, 4})
+    void aFastRobotInDenseClutterNeverCollides(long seed) throws Exception {
+        MissionReport report = run(denseFastWorld(seed));
         assertThat(report.collisions()).isZero();
         assertThat(report.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
     }
@@ -129,5 +134,81 @@ class HardWorldsTest {
                 world.name(), report.outcome(), report.checkpointsReached(), report.collisions(), report.minBattery(),
                 report.recharges(), report.simTimeS(), out);
         return report;
+    }
+    /** A dense cluttered world for a fast robot: gaps of 0.5 m, up to 24 obstacles, 1.0 m/s. */
+    static String denseFastWorld(long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        double[] start = {0.0, -4.0};
+        List<double[]> keepClear = new ArrayList<>();
+        keepClear.add(start);
+        double[] station = {-3.0, -2.5};
+        keepClear.add(station);
+        JsonArray checkpoints = new JsonArray();
+        while (checkpoints.size() < 3) {
+            double x = random.nextDouble(-3.3, 3.3);
+            double y = random.nextDouble(-3.3, 3.3);
+            if (Math.hypot(x, y) < 3.5 && keepClear.stream().allMatch(p -> Math.hypot(p[0] - x, p[1] - y) > 1.5)) {
+                keepClear.add(new double[] {x, y});
+                JsonObject cp = new JsonObject();
+                cp.addProperty("x", round(x));
+                cp.addProperty("y", round(y));
+                checkpoints.add(cp);
+            }
+        }
+        List<double[]> placed = new ArrayList<>(); // x, y, bounding radius
+        JsonArray obstacles = new JsonArray();
+        for (int attempt = 0; attempt < 2000 && placed.size() < 24; attempt++) {
+            double x = random.nextDouble(-3.9, 3.9);
+            double y = random.nextDouble(-3.9, 3.9);
+            double r = random.nextDouble(0.15, 0.5);
+            boolean fits = Math.hypot(x, y) + r < 4.3
+                    && keepClear.stream().allMatch(p -> Math.hypot(p[0] - x, p[1] - y) > r + 0.9)
+                    && placed.stream().allMatch(o -> Math.hypot(o[0] - x, o[1] - y) > r + o[2] + 0.5);
+            if (!fits) {
+                continue;
+            }
+            placed.add(new double[] {x, y, r});
+            JsonObject o = new JsonObject();
+            o.addProperty("x", round(x));
+            o.addProperty("y", round(y));
+            if (placed.size() % 2 == 0) {
+                o.addProperty("shape", "circle");
+                o.addProperty("radiusM", round(r * 0.95));
+            } else { // a box whose half-diagonal stays within r
+                o.addProperty("shape", "box");
+                o.addProperty("widthM", round(r * 1.4));
+                o.addProperty("heightM", round(r * 1.0));
+                o.addProperty("angleDeg", 15.0 * random.nextInt(12));
+            }
+            obstacles.add(o);
+        }
+        JsonObject world = new JsonObject();
+        world.addProperty("name", "dense-fast-" + seed);
+        world.addProperty("seed", seed);
+        world.addProperty("maxSimTimeS", 300);
+        JsonObject arena = new JsonObject();
+        arena.addProperty("radiusM", 5.0);
+        world.add("arena", arena);
+        JsonObject robot = new JsonObject();
+        robot.addProperty("x", start[0]);
+        robot.addProperty("y", start[1]);
+        robot.addProperty("headingDeg", 90.0);
+        robot.addProperty("maxSpeedMps", 1.0);
+        world.add("robot", robot);
+        world.add("obstacles", obstacles);
+        world.add("checkpoints", checkpoints);
+        JsonObject st = new JsonObject();
+        st.addProperty("x", station[0]);
+        st.addProperty("y", station[1]);
+        st.addProperty("radiusM", 0.35);
+        world.add("rechargeStation", st);
+        return world.toString();
+    }
+
+    private static double round(double v) {
+        return Math.round(v * 100) / 100.0;
+    }
+    private static double round(double v) {
+        return Math.round(v * 100) / 100.0;
     }
 }
