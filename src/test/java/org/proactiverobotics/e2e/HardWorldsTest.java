@@ -208,7 +208,4 @@ class HardWorldsTest {
     private static double round(double v) {
         return Math.round(v * 100) / 100.0;
     }
-    private static double round(double v) {
-        return Math.round(v * 100) / 100.0;
-    }
 }
