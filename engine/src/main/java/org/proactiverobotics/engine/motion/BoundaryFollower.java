@@ -35,6 +35,12 @@ public final class BoundaryFollower {
         return following;
     }
 
+    /** Lets go of the boundary at once: the holder has found its own way clear. */
+    public void release() {
+        following = false;
+        clearIterations = 0;
+    }
+
     /**
      * One step.
      *

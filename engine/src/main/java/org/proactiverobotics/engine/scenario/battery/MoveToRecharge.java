@@ -32,6 +32,10 @@ public final class MoveToRecharge extends Rule {
     static final double FULL_TOLERANCE_PCT = 0.5;
     /** A scan this far behind the heading is stale: driving blind, milliseconds. */
     static final long STALE_SCAN_MS = 500;
+    /** Half the sector checked toward the station, radians. */
+    private static final double SECTOR_RAD = Math.toRadians(25);
+    /** Beyond this bearing the station is behind the rays, radians. */
+    private static final double SEEN_BEARING_RAD = Math.toRadians(80);
 
     private double xM;
     private double yM;
@@ -114,13 +118,36 @@ public final class MoveToRecharge extends Rule {
                 command = Steering.STOP; // the distance readings lag: never drive blind
             } else {
                 Clearance clearance = Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM());
-                command = follower.decide(scan, heading.yawRad(), profile, clearance);
+                if (wayToStationClear(clearance)) {
+                    follower.release(); // head for the station: no wall to follow away from it
+                } else {
+                    command = follower.decide(scan, heading.yawRad(), profile, clearance);
+                }
             }
         }
         if (command == null) {
             command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), xM, yM, profile);
         }
         ctx.suggest(command);
+    }
+
+    /**
+     * Whether the robot may head straight for the station: nothing is about to be hit ahead, and
+     * the rays toward the station (±25°) are clear for the release distance, or (before any
+     * boundary is followed) the station is behind, where turning on the spot toward it is safe.
+     */
+    private boolean wayToStationClear(Clearance clearance) {
+        double front = scan.min(-SECTOR_RAD, SECTOR_RAD);
+        if (front < clearance.engageFrontM() && follower.following()) {
+            return false;
+        }
+        double bearing = Steering.wrap(Math.atan2(yM - position.yM(), xM - position.xM()) - heading.yawRad());
+        if (Math.abs(bearing) > SEEN_BEARING_RAD) {
+            return !follower.following() && front >= clearance.imminentM();
+        }
+        double towardStation = scan.min(bearing - SECTOR_RAD, bearing + SECTOR_RAD);
+        double needed = Math.min(clearance.releaseFrontM(), Math.max(clearance.engageAheadM(), position.distanceTo(xM, yM)));
+        return towardStation > needed && front >= clearance.engageFrontM();
     }
 
     @Override
