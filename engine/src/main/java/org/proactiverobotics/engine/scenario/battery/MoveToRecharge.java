@@ -34,6 +34,8 @@ public final class MoveToRecharge extends Rule {
     static final long STALE_SCAN_MS = 500;
     /** Half the sector checked toward the station, radians. */
     private static final double SECTOR_RAD = Math.toRadians(25);
+    /** The flanks reach this far from the heading, radians. */
+    private static final double SIDE_RAD = Math.toRadians(100);
     /** Beyond this bearing the station is behind the rays, radians. */
     private static final double SEEN_BEARING_RAD = Math.toRadians(80);
 
@@ -132,8 +134,8 @@ public final class MoveToRecharge extends Rule {
     }
 
     /**
-     * Whether the robot may head straight for the station: nothing is about to be hit ahead, and
-     * the rays toward the station (±25°) are clear for the release distance, or (before any
+     * Whether the robot may head straight for the station: nothing is about to be hit ahead or
+     * graze a flank, and the rays toward the station (±25°) are clear for the release distance, or (before any
      * boundary is followed) the station is behind, where turning on the spot toward it is safe.
      */
     private boolean wayToStationClear(Clearance clearance) {
@@ -147,7 +149,8 @@ public final class MoveToRecharge extends Rule {
         }
         double towardStation = scan.min(bearing - SECTOR_RAD, bearing + SECTOR_RAD);
         double needed = Math.min(clearance.releaseFrontM(), Math.max(clearance.engageAheadM(), position.distanceTo(xM, yM)));
-        return towardStation > needed && front >= clearance.engageFrontM();
+        double sides = Math.min(scan.min(-SIDE_RAD, -SECTOR_RAD), scan.min(SECTOR_RAD, SIDE_RAD));
+        return towardStation > needed && front >= clearance.engageFrontM() && sides >= clearance.engageSideM();
     }
 
     @Override
