@@ -9,8 +9,6 @@ import java.util.List;
  */
 public final class SimRobot {
 
-    /** Distance-sensor angles relative to the heading, degrees: front-heavy, covering both sides. */
-    private static final double[] SENSOR_ANGLES_DEG = {-90, -45, -20, -8, 8, 20, 45, 90};
 
     private final double radiusM;
     private final double maxSpeedMps;
@@ -26,17 +24,17 @@ public final class SimRobot {
         this.maxSpeedMps = spec.maxSpeedMps();
         this.gps = new Gps(sim);
         this.inertialUnit = new InertialUnit(sim);
-        DistanceSensor[] sensors = new DistanceSensor[SENSOR_ANGLES_DEG.length];
+        DistanceSensor[] sensors = new DistanceSensor[spec.sensorAnglesDeg().size()];
         for (int i = 0; i < sensors.length; i++) {
-            sensors[i] = new DistanceSensor(sim, i, Math.toRadians(SENSOR_ANGLES_DEG[i]), spec.sensorRangeM());
+            sensors[i] = new DistanceSensor(sim, i, Math.toRadians(spec.sensorAnglesDeg().get(i)), spec.sensorRangeM());
         }
         this.distanceSensors = List.of(sensors);
         this.battery = new Battery(sim);
     }
 
-    /** @return the distance sensors' angles relative to the heading, degrees, by index (a copy) */
+    /** @return the default distance sensors' angles relative to the heading, degrees, by index (a copy) */
     public static double[] sensorAnglesDeg() {
-        return SENSOR_ANGLES_DEG.clone();
+        return WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.stream().mapToDouble(Double::doubleValue).toArray();
     }
 
     /** @return the GPS */

@@ -30,7 +30,10 @@ final class WorldParser {
     private static final Set<String> ROOT_KEYS = Set.of("name", "timeStepMs", "maxSimTimeS", "seed", "arena", "robot",
             "obstacles", "checkpoints", "checkpointRadiusM", "rechargeStation", "battery");
     private static final Set<String> ARENA_KEYS = Set.of("radiusM");
-    private static final Set<String> ROBOT_KEYS = Set.of("x", "y", "headingDeg", "radiusM", "maxSpeedMps", "sensorRangeM");
+    private static final Set<String> ROBOT_KEYS = Set.of("x", "y", "headingDeg", "radiusM", "maxSpeedMps", "sensorRangeM",
+            "sensorAnglesDeg");
+    /** The most distance sensors a robot may carry (a laser scanner's rays, say). */
+    static final int MAX_SENSORS = 360;
     private static final Set<String> BOX_KEYS = Set.of("shape", "x", "y", "widthM", "heightM", "angleDeg");
     private static final Set<String> CIRCLE_KEYS = Set.of("shape", "x", "y", "radiusM");
     private static final Set<String> POINT_KEYS = Set.of("x", "y");
@@ -186,10 +189,50 @@ final class WorldParser {
         Double r = number(o, "robot", "radiusM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_RADIUS_M);
         Double v = number(o, "robot", "maxSpeedMps", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS);
         Double s = number(o, "robot", "sensorRangeM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M);
-        if (x == null || y == null || h == null || r == null || v == null || s == null) {
+        List<Double> angles = sensorAngles(o);
+        if (x == null || y == null || h == null || r == null || v == null || s == null || angles == null) {
             return null;
         }
-        return new WorldSpec.Robot(x, y, h, r, v, s);
+        return new WorldSpec.Robot(x, y, h, r, v, s, angles);
+    }
+
+    /** @return the distance sensors' angles, the default eight when absent, or null after recording a problem */
+    private List<Double> sensorAngles(JsonObject robot) {
+        String p = "robot.sensorAnglesDeg";
+        JsonElement e = robot.get("sensorAnglesDeg");
+        if (e == null) {
+            return WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG;
+        }
+        if (!e.isJsonArray()) {
+            problems.add(p + ": expected an array of numbers, got " + kind(e));
+            return null;
+        }
+        JsonArray array = e.getAsJsonArray();
+        if (array.isEmpty() || array.size() > MAX_SENSORS) {
+            problems.add(p + ": must hold 1 to " + MAX_SENSORS + " angles, got " + array.size());
+            return null;
+        }
+        List<Double> angles = new ArrayList<>();
+        for (int i = 0; i < array.size(); i++) {
+            JsonElement a = array.get(i);
+            String pi = p + "[" + i + "]";
+            if (!isNumber(a)) {
+                problems.add(pi + ": expected a number, got " + kind(a));
+                return null;
+            }
+            double d = a.getAsDouble();
+            if (!(d >= -180 && d <= 180)) {
+                problems.add(pi + ": must be from -180 to 180 degrees, got " + a.getAsString());
+                return null;
+            }
+            if (!angles.isEmpty() && d <= angles.get(angles.size() - 1)) {
+                problems.add(pi + ": the angles must increase (rightmost sensor first, counter-clockwise), got "
+                        + a.getAsString() + " after " + array.get(i - 1).getAsString());
+                return null;
+            }
+            angles.add(d);
+        }
+        return angles;
     }
 
     /** @return the obstacles, or null when any is invalid (so placement checks are skipped) */

@@ -94,14 +94,29 @@ public record WorldSpec(
      * @param radiusM      body radius, metres (default 0.12)
      * @param maxSpeedMps  highest wheel speed, metres per second (default 0.5)
      * @param sensorRangeM range of every distance sensor, metres (default 1.0)
+     * @param sensorAnglesDeg each distance sensor's direction relative to the heading, degrees,
+     *                        rightmost first (default {@link #DEFAULT_SENSOR_ANGLES_DEG})
      */
-    public record Robot(double x, double y, double headingDeg, double radiusM, double maxSpeedMps, double sensorRangeM) {
+    public record Robot(double x, double y, double headingDeg, double radiusM, double maxSpeedMps, double sensorRangeM,
+                        List<Double> sensorAnglesDeg) {
         /** Default {@code radiusM}. */
         public static final double DEFAULT_RADIUS_M = 0.12;
         /** Default {@code maxSpeedMps}. */
         public static final double DEFAULT_MAX_SPEED_MPS = 0.5;
         /** Default {@code sensorRangeM}. */
         public static final double DEFAULT_SENSOR_RANGE_M = 1.0;
+        /** Default {@code sensorAnglesDeg}: eight rays, front-heavy, covering both sides. */
+        public static final List<Double> DEFAULT_SENSOR_ANGLES_DEG = List.of(-90.0, -45.0, -20.0, -8.0, 8.0, 20.0, 45.0, 90.0);
+
+        /** Keeps an unmodifiable copy of the angles. */
+        public Robot {
+            sensorAnglesDeg = List.copyOf(sensorAnglesDeg);
+        }
+
+        /** A robot with the default eight distance sensors. */
+        public Robot(double x, double y, double headingDeg, double radiusM, double maxSpeedMps, double sensorRangeM) {
+            this(x, y, headingDeg, radiusM, maxSpeedMps, sensorRangeM, DEFAULT_SENSOR_ANGLES_DEG);
+        }
 
         /** @return the start heading in radians */
         public double headingRad() {

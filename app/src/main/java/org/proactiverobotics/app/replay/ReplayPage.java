@@ -10,7 +10,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
-import org.proactiverobotics.sim2d.SimRobot;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -96,7 +95,7 @@ public final class ReplayPage {
         o.addProperty("sensorRangeM", w.robot().sensorRangeM());
         o.addProperty("timeStepMs", w.timeStepMs());
         JsonArray angles = new JsonArray();
-        for (double deg : SimRobot.sensorAnglesDeg()) {
+        for (double deg : w.robot().sensorAnglesDeg()) {
             angles.add(Math.toRadians(deg));
         }
         o.add("sensorAnglesRad", angles);

@@ -36,6 +36,11 @@ public final class WorldJson {
         robot.addProperty("radiusM", r.radiusM());
         robot.addProperty("maxSpeedMps", r.maxSpeedMps());
         robot.addProperty("sensorRangeM", r.sensorRangeM());
+        if (!r.sensorAnglesDeg().equals(WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG)) { // a default world's file stays as it was
+            JsonArray angles = new JsonArray();
+            r.sensorAnglesDeg().forEach(angles::add);
+            robot.add("sensorAnglesDeg", angles);
+        }
         root.add("robot", robot);
         JsonArray obstacles = new JsonArray();
         for (WorldSpec.Obstacle o : world.obstacles()) {

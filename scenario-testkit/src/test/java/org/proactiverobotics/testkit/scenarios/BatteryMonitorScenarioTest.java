@@ -64,4 +64,27 @@ class BatteryMonitorScenarioTest {
             assertThat(kit.scheduled()).contains("BatteryMonitor/MoveToRecharge");
         }
     }
+
+    @Test
+    void aLegNoChargeCouldPromiseIsTakenAndTheRobotTurnsBackAtThePointOfNoReturnWhereverItIs() {
+        try (ScenarioKit kit = kit()) {
+            // 2 %/m: from the station 42 m out and 42 m back need 240 %: a recharge cannot make this leg certain
+            kit.mission().station(-2, 0, 100).checkpoint(40, 0).checkpoint(0, 3);
+            drive(kit, 0, 60, 2.0);
+            // then round in circles (radius 0.5 m about (1, 0)), 0.1 m and 0.2 % a step, no nearer the checkpoint
+            double pct = 56;
+            boolean sentBack = false;
+            for (int i = 0; pct > 10 && !sentBack; i++) {
+                double a = i * 0.2;
+                pct -= 0.2;
+                kit.robot().gps(1 + 0.5 * Math.cos(a), 0.5 * Math.sin(a)).headingDeg(Math.toDegrees(a) + 90).battery(pct);
+                kit.step();
+                sentBack = kit.scheduled().contains("BatteryMonitor/MoveToRecharge");
+                // the way back is 2.5 to 3.5 m: 2 %/m × 1.4 × 3.5 m + 5 = 14.8 % at most
+                assertThat(sentBack).as("sent back at %.1f %%", pct).isEqualTo(sentBack && pct < 15);
+            }
+            assertThat(pct).as("sent back by the point of no return, 2 %%/m × 1.4 × 2.5 m + 5 = 12 %% (less what the estimate has yet to learn)").isGreaterThan(10.5);
+            assertThat(kit.scheduled()).contains("BatteryMonitor/MoveToRecharge");
+        }
+    }
 }

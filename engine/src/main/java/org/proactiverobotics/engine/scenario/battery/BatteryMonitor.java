@@ -12,19 +12,33 @@ import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.Station;
 
 /**
- * Can the robot reach its next checkpoint and still get to the recharge station from there (or,
- * for the last checkpoint, just reach it)? While yes it clones itself; if not it generates
- * MoveToRecharge. The cost of travel is learnt from GPS and battery history; straight-line
- * distances are stretched by a detour factor for obstacles, and a reserve is kept.
+ * Keeps the battery promise: the robot gets to the recharge station before the battery is flat,
+ * whatever else happens. Two checks, every iteration; while both pass it clones itself, when one
+ * fails it generates MoveToRecharge.
+ * <ul>
+ * <li><b>Point of no return</b>, always, whether or not the robot makes progress (lost, circling,
+ * stuck on a wall): is there enough left to drive back to the station? The way back is the
+ * straight line stretched by the detour factor (1.4 until a trip to the station has measured a
+ * longer one, see {@link DrainEstimate#detour()}), plus a reserve.</li>
+ * <li><b>The leg</b>: can the robot reach its next checkpoint and still get to the station from
+ * there (for the last checkpoint: just reach it)? Checked only when a full charge could promise
+ * the leg from the station (a recharge then helps), and not on the first leg after a recharge:
+ * the robot then sets out with all a charge can give and turns back only at the point of no
+ * return, so it never oscillates between the station and a leg that asks for more than a full
+ * charge.</li>
+ * </ul>
+ * The cost of travel is learnt from GPS and battery history.
  */
 public final class BatteryMonitor extends Rule {
 
-    /** Paths are longer than straight lines around obstacles. */
-    static final double DETOUR_FACTOR = 1.4;
     /** Battery always kept back, percent. */
     static final double RESERVE_PCT = 5.0;
 
     private DrainEstimate drain = new DrainEstimate();
+    /** Just handed back by a recharge: the next leg is taken whatever it asks. */
+    private boolean charged;
+    /** The checkpoint the robot set out for after the last recharge (-1: none). */
+    private int committedSeq = -1;
 
     private transient GpsFix position;
     private transient BatteryState battery;
@@ -36,8 +50,10 @@ public final class BatteryMonitor extends Rule {
     public BatteryMonitor() {
     }
 
+    /** A monitor after a recharge, keeping what was learnt. */
     BatteryMonitor(DrainEstimate drain) {
         this.drain = drain;
+        this.charged = true;
     }
 
     @Override
@@ -70,11 +86,11 @@ public final class BatteryMonitor extends Rule {
     }
 
     /**
-     * Condition: the battery is too low to reach the next checkpoint and then the station (for
-     * the last checkpoint: to reach it), and a recharge would help (the battery is below the
-     * level a recharge gives; otherwise going on is the best there is). Until the cost of travel
-     * has been measured, only the point of no return counts: just enough left to reach the
-     * station at the cautious prior cost.
+     * Condition: a recharge is needed and would help. It would help while the battery is below the
+     * level a recharge gives. It is needed past the point of no return (just enough left to reach
+     * the station on the detoured way back), or, once the cost of travel has been measured and
+     * except on the first leg after a recharge, when the next checkpoint and then the station
+     * (for the last checkpoint: just the checkpoint) are beyond what is left.
      */
     @Override
     protected boolean conditions(RuleContext ctx) {
@@ -82,19 +98,38 @@ public final class BatteryMonitor extends Rule {
         if (next == null) {
             return false;
         }
+        if (charged) {
+            committedSeq = next.seq();
+            charged = false;
+        }
         double fullPct = ctx.service(MissionTables.class).rechargeLevelPct().orElse(100.0);
         if (battery.levelPct() >= fullPct - MoveToRecharge.FULL_TOLERANCE_PCT) {
             return false;
         }
-        double perMetre = drain.pctPerMetre() * DETOUR_FACTOR;
-        if (!drain.learnt()) {
-            neededPct = perMetre * position.distanceTo(station.xM(), station.yM()) + RESERVE_PCT;
-            return battery.levelPct() < neededPct;
-        }
+        double perMetre = drain.pctPerMetre();
+        double detour = drain.detour();
+        double backPct = perMetre * detour * position.distanceTo(station.xM(), station.yM()) + RESERVE_PCT;
         boolean last = next.seq() == checkpoints.get(checkpoints.size() - 1).seq();
-        double metres = position.distanceTo(next.xM(), next.yM())
-                + (last ? 0.0 : Math.hypot(station.xM() - next.xM(), station.yM() - next.yM()));
-        neededPct = perMetre * metres + RESERVE_PCT;
+        if (last && battery.levelPct() >= perMetre * detour * position.distanceTo(next.xM(), next.yM()) + RESERVE_PCT
+                && position.distanceTo(next.xM(), next.yM()) <= position.distanceTo(station.xM(), station.yM())) {
+            neededPct = Math.min(backPct, perMetre * detour * position.distanceTo(next.xM(), next.yM()) + RESERVE_PCT);
+            return false; // the last checkpoint is nearer than the station and within reach: finishing is the safer way
+        }
+        neededPct = backPct;
+        if (battery.levelPct() < backPct) {
+            return true;
+        }
+        if (!drain.learnt() || next.seq() == committedSeq) {
+            return false;
+        }
+        double nextToStationM = last ? 0.0 : Math.hypot(station.xM() - next.xM(), station.yM() - next.yM());
+        double fromStationPct = perMetre * detour
+                * (Math.hypot(station.xM() - next.xM(), station.yM() - next.yM()) + nextToStationM) + RESERVE_PCT;
+        if (fromStationPct > fullPct) {
+            return false; // a full charge cannot promise this leg either: go on, turn back at the point of no return
+        }
+        double metres = position.distanceTo(next.xM(), next.yM()) + nextToStationM;
+        neededPct = Math.max(backPct, perMetre * detour * metres + RESERVE_PCT);
         return battery.levelPct() < neededPct;
     }
 

@@ -3,7 +3,9 @@ package org.proactiverobotics.engine.scenario.battery;
 /**
  * How much battery a metre of travel costs, learnt from what the engine sees: GPS positions and
  * battery readings, while not charging. Until enough has been travelled it assumes a cautious
- * prior. Plain fields, so it is saved with the rule that holds it.
+ * prior. Also how much longer than the straight line the way to the station has turned out to be
+ * (the detour factor of the trips made so far, never below {@link #MIN_DETOUR}). Plain fields, so
+ * it is saved with the rule that holds it.
  */
 final class DrainEstimate {
 
@@ -12,7 +14,15 @@ final class DrainEstimate {
     /** Travel needed before the measurement replaces the prior, metres. */
     static final double LEARN_AFTER_M = 1.0;
 
+    /** The detour assumed for a way not yet driven: paths round obstacles are longer than straight lines. */
+    static final double MIN_DETOUR = 1.4;
+    /** A trip this much longer than its straight line was a robot lost on the way, not a measure of the world. */
+    static final double MAX_DETOUR = 3.0;
+    /** Trips shorter than this, in straight line, teach nothing about detours, metres. */
+    static final double DETOUR_LEARN_AFTER_M = 1.0;
+
     private double travelledM;
+    private double detour = MIN_DETOUR;
     private double drainedPct;
     private double sinceReadingM;
     private boolean hasLast;
@@ -20,12 +30,12 @@ final class DrainEstimate {
     private double lastY;
     private double lastLevelPct;
     private long lastBatteryMs = -1;
+    private transient double lastStepM;
 
     /** Adds a GPS position: the distance from the previous one counts as travel. */
     void position(double x, double y) {
-        if (hasLast) {
-            sinceReadingM += Math.hypot(x - lastX, y - lastY);
-        }
+        lastStepM = hasLast ? Math.hypot(x - lastX, y - lastY) : 0.0;
+        sinceReadingM += lastStepM;
         hasLast = true;
         lastX = x;
         lastY = y;
@@ -43,6 +53,28 @@ final class DrainEstimate {
         sinceReadingM = 0;
         lastBatteryMs = simTimeMs;
         lastLevelPct = levelPct;
+    }
+
+    /**
+     * Learns from a finished trip to the station.
+     *
+     * @param drivenM   the distance driven on the trip, metres
+     * @param straightM the straight-line distance from where it started, metres
+     */
+    void trip(double drivenM, double straightM) {
+        if (straightM >= DETOUR_LEARN_AFTER_M) {
+            detour = Math.max(detour, Math.min(MAX_DETOUR, drivenM / straightM));
+        }
+    }
+
+    /** @return how much longer than the straight line a way is assumed to be: at least {@value #MIN_DETOUR} */
+    double detour() {
+        return detour;
+    }
+
+    /** @return the distance since the previous GPS position, metres (0 for the first) */
+    double lastStepM() {
+        return lastStepM;
     }
 
     /** @return whether enough travel has been seen to replace the prior by a measurement */
