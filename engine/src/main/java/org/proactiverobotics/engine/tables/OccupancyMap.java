@@ -27,6 +27,8 @@ public final class OccupancyMap {
 
     private final Map<Long, byte[]> chunks = new HashMap<>();
     private final Set<Long> changed = new LinkedHashSet<>();
+    /** The changed chunks that gained an occupied cell. */
+    private final Set<Long> gainedOccupied = new LinkedHashSet<>();
     private int minCx = Integer.MAX_VALUE;
     private int minCy = Integer.MAX_VALUE;
     private int maxCx = Integer.MIN_VALUE;
@@ -94,6 +96,9 @@ public final class OccupancyMap {
         }
         c[at] = state;
         changed.add(k);
+        if (state == OCCUPIED) {
+            gainedOccupied.add(k);
+        }
         return true;
     }
 
@@ -119,13 +124,28 @@ public final class OccupancyMap {
         return ((x ? maxCx : maxCy) + 1) * CHUNK_CELLS;
     }
 
-    /** @return the chunks changed since the last call, each once, and forgets them */
+    /** @return the chunks changed since they were last taken, each once, and forgets them */
     public List<MapChunk> takeChanged() {
         List<MapChunk> out = new ArrayList<>(changed.size());
         for (long k : changed) {
             out.add(new MapChunk((int) (k >> 32), (int) k, chunks.get(k).clone()));
         }
         changed.clear();
+        gainedOccupied.clear();
+        return out;
+    }
+
+    /**
+     * @return the changed chunks that gained an occupied cell since they were last taken, and
+     *         forgets them; chunks where only free cells changed stay to be taken later
+     */
+    public List<MapChunk> takeGainedOccupied() {
+        List<MapChunk> out = new ArrayList<>(gainedOccupied.size());
+        for (long k : gainedOccupied) {
+            out.add(new MapChunk((int) (k >> 32), (int) k, chunks.get(k).clone()));
+            changed.remove(k);
+        }
+        gainedOccupied.clear();
         return out;
     }
 
