@@ -74,7 +74,7 @@ public final class RobotEngine {
     /** Keep this many of the robot's newest commands, answered requests and rule failures. */
     public static final int KEEP_ROWS = 1000;
 
-    /** Built-in scenarios started before the plug-ins (the paper's 1 → 4 → 2 → 3), with their slots (-1: none). */
+    /** Built-in scenarios started before the plug-ins (the paper's 1 → 4 → 2 → 3, Mapping after 1), with their slots (-1: none). */
     private static final Map<String, Integer> FIRST = orderedMap(
             DataAcquisitionScenario.NAME, -1,
             MappingScenario.NAME, -1,
