@@ -68,7 +68,7 @@ CREATE TABLE IF NOT EXISTS battery_recharged (
 );
 
 -- The checkpoints to reach, in seq order (mission rows, seeded from the world file).
--- The engine marks them reached.
+-- The engine marks them reached, or unreachable when no route leads there (the mission ends).
 CREATE TABLE IF NOT EXISTS checkpoints (
   robot_id            INT     NOT NULL,
   seq                 INT     NOT NULL,
@@ -77,6 +77,7 @@ CREATE TABLE IF NOT EXISTS checkpoints (
   radius_m            DOUBLE  NOT NULL,
   reached             BOOLEAN NOT NULL DEFAULT FALSE,
   reached_sim_time_ms BIGINT,
+  unreachable         BOOLEAN NOT NULL DEFAULT FALSE,
   PRIMARY KEY (robot_id, seq)
 );
 
@@ -150,6 +151,19 @@ CREATE TABLE IF NOT EXISTS engine_queue (
   rule_type VARCHAR(255) NOT NULL,
   rule_json LONGTEXT     NOT NULL,
   PRIMARY KEY (robot_id, position)
+);
+
+-- The robot's occupancy map (the Mapping scenario), built from its distance scans and GPS/IU
+-- readings: squares of 16 x 16 cells of 0.05 m; chunk (cx, cy) covers x from cx * 0.8 m and y
+-- from cy * 0.8 m. cells: 256 bytes, row by row from the lower-left cell, 0 unknown, 1 free,
+-- 2 occupied. Only chunks that changed are rewritten.
+CREATE TABLE IF NOT EXISTS occupancy_map (
+  robot_id            INT            NOT NULL,
+  chunk_x             INT            NOT NULL,
+  chunk_y             INT            NOT NULL,
+  cells               VARBINARY(256) NOT NULL,
+  updated_sim_time_ms BIGINT         NOT NULL,
+  PRIMARY KEY (robot_id, chunk_x, chunk_y)
 );
 
 -- Every failure of a rule part: which rule, of which scenario, which part, and why.

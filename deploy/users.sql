@@ -23,8 +23,8 @@ GRANT SELECT ON `@DATABASE@`.battery_level TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.battery_recharged TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.robot_clock TO '@ENGINE_USER@'@'@HOST@';
--- it marks checkpoints reached (and not reached when a new robot run starts)
-GRANT SELECT, UPDATE (reached, reached_sim_time_ms) ON `@DATABASE@`.checkpoints TO '@ENGINE_USER@'@'@HOST@';
+-- it marks checkpoints reached or unreachable (and neither when a new robot run starts)
+GRANT SELECT, UPDATE (reached, reached_sim_time_ms, unreachable) ON `@DATABASE@`.checkpoints TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_comments TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.sensor_requests TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.strategy TO '@ENGINE_USER@'@'@HOST@';
@@ -32,6 +32,7 @@ GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_state TO '@ENGINE_US
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_queue TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.rule_failures TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_clock TO '@ENGINE_USER@'@'@HOST@';
+GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.occupancy_map TO '@ENGINE_USER@'@'@HOST@';
 
 -- ---- The robot: writes its readings, answers requests, reads commands ----------------------
 -- DELETE on its readings: the retention policy, and a new run starting clean
@@ -61,3 +62,4 @@ GRANT SELECT ON `@DATABASE@`.checkpoints TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.rule_failures TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.strategy TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.occupancy_map TO '@VIEWER_USER@'@'@HOST@';

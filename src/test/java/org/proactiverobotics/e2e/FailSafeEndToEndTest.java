@@ -18,8 +18,8 @@ class FailSafeEndToEndTest {
 
     @Test
     void obstacleAvoidanceFailingNearAnObstacleSendsNoAvoidanceCommandStopsTheRobotAndComesBack() throws Exception {
-        double failFromS = 4.5; // avoidance is busy with the first obstacle from about 4 s to 9 s
-        double failUntilS = 5.5;
+        double failFromS = 5.5; // avoidance is busy with the first obstacle from about 5.4 s to 8.1 s
+        double failUntilS = 6.5;
         AtomicBoolean failing = new AtomicBoolean();
         FaultInjection fault = new FaultInjection(ObstacleAvoidanceScenario.class, failing::get);
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
@@ -30,13 +30,18 @@ class FailSafeEndToEndTest {
             assertThat(report.ruleFailures()).isPositive();
             List<FaultInjection.Sent> sent = fault.sent;
             long firstFailureMs = (long) (failFromS * 1000);
-            // From the failure until avoidance is back: not one avoidance command, and STOP from the fail-safe.
+            // From the failure until the fail-safe has restarted avoidance: not one avoidance command, and STOP
+            // from the fail-safe (the robot does not drive on without its avoidance).
             FaultInjection.Sent firstAvoidanceAgain = sent.stream()
                     .filter(s -> s.simTimeMs() >= firstFailureMs && s.scenario().equals("ObstacleAvoidance"))
                     .findFirst().orElseThrow();
+            FaultInjection.Sent firstDriveAgain = sent.stream()
+                    .filter(s -> s.simTimeMs() >= firstFailureMs && !s.command().equals("STOP")).findFirst().orElseThrow();
             List<FaultInjection.Sent> window = sent.stream()
-                    .filter(s -> s.simTimeMs() >= firstFailureMs && s.iteration() < firstAvoidanceAgain.iteration()).toList();
+                    .filter(s -> s.simTimeMs() >= firstFailureMs && s.iteration() < firstDriveAgain.iteration()).toList();
             assertThat(firstAvoidanceAgain.simTimeMs()).as("back only once the fault is gone").isGreaterThan((long) (failUntilS * 1000));
+            assertThat(firstDriveAgain.simTimeMs()).as("driving again only once the fault is gone")
+                    .isGreaterThan((long) (failUntilS * 1000));
             assertThat(window).isNotEmpty().allSatisfy(s -> assertThat(s.command()).as(s.toString()).isEqualTo("STOP"));
             assertThat(window).anySatisfy(s -> assertThat(s.scenario()).isEqualTo("FailSafe"));
             assertThat(report.commandWins()).containsKey("FailSafe");

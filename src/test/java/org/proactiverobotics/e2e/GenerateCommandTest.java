@@ -25,7 +25,7 @@ class GenerateCommandTest extends CommandLineTest {
     Path tmp;
 
     @ParameterizedTest(name = "{0}")
-    @ValueSource(strings = {"cluttered", "traps", "corridors", "battery"})
+    @ValueSource(strings = {"cluttered", "traps", "corridors", "battery", "pillars", "rooms", "maze"})
     void writesValidSolvableWorldsOfTheKindTheSameForTheSameSeed(String kind) throws Exception {
         Path a = tmp.resolve("a");
         Path b = tmp.resolve("b");
@@ -52,6 +52,20 @@ class GenerateCommandTest extends CommandLineTest {
         assertThat(Files.readString(a.resolve(kind + "-001.json"))).isNotEqualTo(Files.readString(a.resolve(kind + "-002.json")));
     }
 
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"pillars", "rooms", "maze", "corridors"})
+    void aLargerRobotGetsWiderPassagesEachCheckedOnItsOwnFootprint(String kind) throws Exception {
+        Path out = tmp.resolve("r");
+        assertThat(run("generate", "--kind", kind, "--count", "2", "--seed", "3", "--robot-radius", "0.3", "--out",
+                out.toString())).as(err.toString()).isZero();
+        for (String name : List.of(kind + "-001.json", kind + "-002.json")) {
+            WorldSpec world = WorldFiles.load(out.resolve(name));
+            assertThat(world.robot().radiusM()).isEqualTo(0.3);
+            Solvability plan = Solvability.of(world); // on the 0.3 m robot's footprint plus the clearance
+            assertThat(plan.solvable()).as(name + ": " + plan.reason()).isTrue();
+        }
+    }
+
     @Test
     void thePlannerFindsNoWayThroughAClosedWallAndABatteryTooSmall() {
         WorldSpec ref = WorldFiles.bundled("reference-arena");
@@ -74,6 +88,9 @@ class GenerateCommandTest extends CommandLineTest {
         assertThat(err.toString()).contains("--kind must be one of cluttered, traps, corridors, battery");
         assertThat(run("generate", "--kind", "traps", "--count", "0", "--out", out.toString())).isEqualTo(2);
         assertThat(err.toString()).contains("--count");
+        assertThat(run("generate", "--kind", "rooms", "--count", "1", "--robot-radius", "0.5", "--out", out.toString()))
+                .isEqualTo(2);
+        assertThat(err.toString()).contains("--robot-radius must be from 0.05 to 0.3");
         assertThat(out).doesNotExist();
         Files.createDirectories(out);
         Files.writeString(out.resolve("mine.json"), "{}");

@@ -86,8 +86,8 @@ class MissionEndToEndTest {
 
     @Test
     void aStrategyChangedWhileRunningDecidesTheNextIterations() throws Exception {
-        double switchAtS = 5.0; // avoidance is busy with the first obstacle from about 4 s to 9 s
-        double switchBackAtS = 8.0;
+        double switchAtS = 6.0; // avoidance is busy with the first obstacle from about 5.4 s to 8.1 s
+        double switchBackAtS = 9.0;
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             JdbcRobotTables strategyFromOutside = new JdbcRobotTables(db.dataSource(), 1);
             AtomicBoolean switched = new AtomicBoolean();

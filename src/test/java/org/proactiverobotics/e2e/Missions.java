@@ -19,6 +19,7 @@ import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldFiles;
+import org.proactiverobotics.sim2d.WorldSpec;
 
 /** Runs missions for the end-to-end tests, each on a fresh database, and remembers H2 runs. */
 final class Missions {
@@ -74,6 +75,18 @@ final class Missions {
     static Run direct(String world, String strategy) {
         MissionOptions options = new MissionOptions(WorldFiles.bundled(world), null, null, null, strategy, 1)
                 .withLink(MissionOptions.Link.DIRECT);
+        return run(options, sim -> { }, UnaryOperator.identity());
+    }
+
+    /** The run of any world over the in-process direct link. */
+    static Run direct(WorldSpec world, String strategy) {
+        MissionOptions options = new MissionOptions(world, null, null, null, strategy, 1).withLink(MissionOptions.Link.DIRECT);
+        return run(options, sim -> { }, UnaryOperator.identity());
+    }
+
+    /** The run of any world on a database. */
+    static Run run(WorldSpec world, TestDatabase db, String strategy) {
+        MissionOptions options = new MissionOptions(world, db.jdbcUrl(), db.user(), db.password(), strategy, 1);
         return run(options, sim -> { }, UnaryOperator.identity());
     }
 

@@ -31,7 +31,7 @@ import picocli.CommandLine.Spec;
 public final class GenerateCommand implements Callable<Integer> {
 
     @Option(names = "--kind", paramLabel = "KIND", required = true,
-            description = "cluttered, traps, corridors or battery.")
+            description = "cluttered, traps, corridors, battery, pillars, rooms or maze.")
     private String kind;
 
     @Option(names = "--count", paramLabel = "N", required = true, description = "How many worlds (1 to 10000).")
@@ -44,6 +44,11 @@ public final class GenerateCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR", required = true,
             description = "The folder to write <kind>-<NNN>.json into; must not exist or be empty.")
     private Path out;
+
+    @Option(names = "--robot-radius", paramLabel = "M", defaultValue = "0.12",
+            description = "The robot's radius in metres (0.05 to 0.3): passages, doors and corridors scale with it,"
+                    + " and the planner checks each world on this footprint. Default: ${DEFAULT-VALUE}.")
+    private double robotRadiusM;
 
     @Option(names = "--force", description = "Write into --out even if it is not empty.")
     private boolean force;
@@ -61,7 +66,8 @@ public final class GenerateCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
-        WorldGenerator generator = new WorldGenerator(WorldGenerator.Kind.valueOf(kind.toUpperCase(Locale.ROOT)));
+        WorldGenerator generator = new WorldGenerator(WorldGenerator.Kind.valueOf(kind.toUpperCase(Locale.ROOT)),
+                robotRadiusM);
         List<WorldSpec> worlds = new ArrayList<>();
         for (int i = 1; i <= count; i++) {
             worlds.add(generator.world(seed, i));
@@ -90,6 +96,9 @@ public final class GenerateCommand implements Callable<Integer> {
     private String problem() {
         if (!WorldGenerator.Kind.labels().contains(kind)) {
             return "--kind must be one of " + String.join(", ", WorldGenerator.Kind.labels()) + ": " + kind;
+        }
+        if (!(robotRadiusM >= 0.05 && robotRadiusM <= 0.3)) {
+            return "--robot-radius must be from 0.05 to 0.3 (metres): " + robotRadiusM;
         }
         if (count < 1 || count > 10_000) {
             return "--count must be from 1 to 10000: " + count;

@@ -60,7 +60,13 @@ public class ProactiveController extends RobotSuperclass {
     private long refusalsSinceWarn;
     private boolean seeded;
     private boolean startBatteryWritten;
+    /** Read the checkpoints' unreachable marks every this many steps, simulated. */
+    static final int UNREACHABLE_EVERY = 16;
     private long senseCalls;
+    /** Steps sensed, for the checkpoints' poll. */
+    private long sensedSteps;
+    /** The engine marked a checkpoint unreachable: the mission is over. */
+    private boolean checkpointUnreachable;
     private Consumer<CommandRecord> commandListener = record -> { };
 
     /**
@@ -135,6 +141,17 @@ public class ProactiveController extends RobotSuperclass {
         return seeded && startBatteryWritten;
     }
 
+    /** @return whether the engine has marked a checkpoint unreachable (read every {@value #UNREACHABLE_EVERY} steps) */
+    public boolean checkpointUnreachable() {
+        return checkpointUnreachable;
+    }
+
+    /** The mission is also over when the engine found a checkpoint unreachable. */
+    @Override
+    protected boolean missionOver() {
+        return checkpointUnreachable || super.missionOver();
+    }
+
     @Override
     public void sense() {
         long now = simTimeMs();
@@ -145,6 +162,10 @@ public class ProactiveController extends RobotSuperclass {
             if (pruned != null) {
                 stats.rowsPruned += pruned;
             }
+        }
+        if (++sensedSteps % UNREACHABLE_EVERY == 0 && !checkpointUnreachable) {
+            Boolean unreachable = call("reading checkpoints", 0, l -> l.checkpointUnreachable(robotId));
+            checkpointUnreachable = unreachable != null && unreachable;
         }
         List<SensorRequest> pending = call("reading sensor_requests", 0, l -> l.pendingRequests(robotId));
         if (pending == null || pending.isEmpty()) {

@@ -106,7 +106,7 @@ public final class EngineClock {
 
     /**
      * A new robot run starts from a clean slate on the engine's side, as the one-process mission
-     * does: its commands and sensor requests go, its checkpoints are not reached any more. The
+     * does: its commands and sensor requests go, its checkpoints are neither reached nor unreachable any more, its map is gone. The
      * mission rows and the strategy stay (a strategy set with the strategy command survives).
      */
     public void resetForNewRun() throws SQLException {
@@ -115,7 +115,8 @@ public final class EngineClock {
             try {
                 for (String sql : new String[] {"DELETE FROM engine_comments WHERE robot_id = ?",
                         "DELETE FROM sensor_requests WHERE robot_id = ?",
-                        "UPDATE checkpoints SET reached = FALSE, reached_sim_time_ms = NULL WHERE robot_id = ?"}) {
+                        "UPDATE checkpoints SET reached = FALSE, reached_sim_time_ms = NULL, unreachable = FALSE WHERE robot_id = ?",
+                        "DELETE FROM occupancy_map WHERE robot_id = ?"}) {
                     try (PreparedStatement ps = c.prepareStatement(sql)) {
                         ps.setInt(1, robotId);
                         ps.executeUpdate();

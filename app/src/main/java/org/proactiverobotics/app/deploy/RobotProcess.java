@@ -108,7 +108,7 @@ public final class RobotProcess {
             long start = System.nanoTime();
             robot.run(new StatusGate(lockstep, sim, options, tracer));
             double wallS = (System.nanoTime() - start) / 1e9;
-            Outcome outcome = outcome(sim);
+            Outcome outcome = outcome(sim, robot.checkpointUnreachable());
             lockstep.finish(outcome == Outcome.STOPPED ? "STOPPED" : "FINISHED");
             long iterations = lockstep.lastTick().map(t -> t.iteration()).orElse(0L);
             return report(sim, outcome, wallS, robot.loopTimes(), wins, iterations);
@@ -131,8 +131,8 @@ public final class RobotProcess {
     }
 
     /** The one-process mission's checks; a robot stopped before any of them holds was stopped. */
-    private static Outcome outcome(Simulation sim) {
-        Outcome outcome = Outcome.of(sim);
+    private static Outcome outcome(Simulation sim, boolean unreachable) {
+        Outcome outcome = Outcome.of(sim, unreachable);
         return outcome == null ? Outcome.STOPPED : outcome;
     }
 

@@ -1,5 +1,6 @@
 package org.proactiverobotics.app.generate;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -24,10 +25,16 @@ public final class WorldGenerator {
         CLUTTERED,
         /** U-shaped cups opening towards the robot, a checkpoint behind each: local minima to get out of. */
         TRAPS,
-        /** Long walls across the arena with a gap at alternating ends: a serpentine to follow. */
+        /** Long walls across the arena, each with one gap of 1.9 to 2.9 robot diameters (0.45 to 0.7 m) at alternating ends. */
         CORRIDORS,
         /** Few obstacles, far checkpoints and a battery that cannot do the tour without recharging. */
-        BATTERY;
+        BATTERY,
+        /** A dense field of thin pillars between the start and the goal, passages down to 1.5 robot diameters. */
+        PILLARS,
+        /** Rooms of 2.3 to 3.5 m joined by doors of 2 to 3 robot diameters, checkpoints in other rooms. */
+        ROOMS,
+        /** A maze of corridors 2.5 to 3.2 robot diameters wide, checkpoints in far parts of it. */
+        MAZE;
 
         /** @return its name on the command line */
         public String label() {
@@ -44,10 +51,20 @@ public final class WorldGenerator {
     private static final int MAX_DRAWS = 500;
 
     private final Kind kind;
+    private final double robotRadiusM;
 
-    /** @param kind the kind of world to draw */
+    /** @param kind the kind of world to draw, for the default robot (radius {@value WorldSpec.Robot#DEFAULT_RADIUS_M} m) */
     public WorldGenerator(Kind kind) {
+        this(kind, WorldSpec.Robot.DEFAULT_RADIUS_M);
+    }
+
+    /**
+     * @param kind         the kind of world to draw
+     * @param robotRadiusM the robot's radius, metres: passages, doors and corridors scale with it
+     */
+    public WorldGenerator(Kind kind, double robotRadiusM) {
         this.kind = kind;
+        this.robotRadiusM = robotRadiusM;
     }
 
     /**
@@ -81,7 +98,7 @@ public final class WorldGenerator {
     }
 
     private WorldSpec draw(String name, SplittableRandom random) {
-        WorldSpec.Robot robot = new WorldSpec.Robot(0.0, -4.2, 90.0, WorldSpec.Robot.DEFAULT_RADIUS_M,
+        WorldSpec.Robot robot = new WorldSpec.Robot(0.0, -4.2, 90.0, robotRadiusM,
                 WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M);
         List<Obstacle> obstacles = new ArrayList<>();
         List<WorldSpec.Checkpoint> checkpoints = new ArrayList<>();
@@ -91,7 +108,18 @@ public final class WorldGenerator {
         switch (kind) {
             case CLUTTERED -> clutter(random, robot, station, checkpoints, obstacles, 3 + random.nextInt(3), 10 + random.nextInt(7));
             case TRAPS -> traps(random, robot, checkpoints, obstacles);
-            case CORRIDORS -> corridors(random, checkpoints, obstacles);
+            case CORRIDORS -> corridors(random, checkpoints, obstacles, 2 * robotRadiusM);
+            case PILLARS -> pillars(random, checkpoints, obstacles, 2 * robotRadiusM);
+            case ROOMS -> {
+                double[] start = rooms(random, checkpoints, obstacles, 2 * robotRadiusM);
+                robot = new WorldSpec.Robot(start[0], start[1], 90.0, robot.radiusM(), robot.maxSpeedMps(), robot.sensorRangeM());
+                station = new WorldSpec.RechargeStation(start[2], start[3], 0.35);
+            }
+            case MAZE -> {
+                double[] start = maze(random, checkpoints, obstacles, 2 * robotRadiusM);
+                robot = new WorldSpec.Robot(start[0], start[1], 90.0, robot.radiusM(), robot.maxSpeedMps(), robot.sensorRangeM());
+                station = new WorldSpec.RechargeStation(start[2], start[3], 0.35);
+            }
             case BATTERY -> {
                 clutter(random, robot, station, checkpoints, obstacles, 3 + random.nextInt(3), 3 + random.nextInt(5));
                 battery = new WorldSpec.Battery(round(random.nextDouble(25, 45)), round(random.nextDouble(1.5, 3.0)), 100.0,
@@ -171,7 +199,8 @@ public final class WorldGenerator {
     }
 
     /** Two to four walls across the arena, gaps at alternating ends, a checkpoint at the far end of each lane. */
-    private static void corridors(SplittableRandom random, List<WorldSpec.Checkpoint> checkpoints, List<Obstacle> obstacles) {
+    private static void corridors(SplittableRandom random, List<WorldSpec.Checkpoint> checkpoints, List<Obstacle> obstacles,
+                                  double diameterM) {
         int walls = 2 + random.nextInt(3);
         double bottom = -3.2;
         double top = 3.2;
@@ -180,19 +209,227 @@ public final class WorldGenerator {
         for (int w = 0; w < walls; w++) {
             double y = round(bottom + w * spacing + random.nextDouble(-0.15, 0.15));
             double half = Math.sqrt(ARENA_M * ARENA_M - y * y); // the chord at this height
-            double gap = random.nextDouble(1.0, 1.4);
+            double gap = random.nextDouble(1.9, 2.9) * diameterM;
             double from = gapRight ? -half - 0.3 : -half + gap;
             double to = gapRight ? half - gap : half + 0.3;
             obstacles.add(Obstacle.box(round((from + to) / 2), y, round(to - from), 0.2, 0.0));
             // in the lane below the wall, at the gap's end: the robot must reach it to get through
             double laneY = round(y - Math.min(0.8, spacing / 2));
             double laneHalf = Math.sqrt(ARENA_M * ARENA_M - laneY * laneY);
-            double cx = gapRight ? laneHalf - gap / 2 - 0.4 : -laneHalf + gap / 2 + 0.4;
+            double cx = gapRight ? laneHalf - gap / 2 - 0.6 : -laneHalf + gap / 2 + 0.6;
             checkpoints.add(new WorldSpec.Checkpoint(round(cx), laneY));
             gapRight = !gapRight;
         }
         double lastY = round(top + 0.8);
         checkpoints.add(new WorldSpec.Checkpoint(round(random.nextDouble(-1.5, 1.5)), Math.min(lastY, 4.0)));
+    }
+
+    /**
+     * Thin pillars on a jittered grid over the middle of the arena, the gaps between rims 1.5 to 2.5
+     * robot diameters, a few left out; the goal beyond the field, a second checkpoint to one side.
+     */
+    private static void pillars(SplittableRandom random, List<WorldSpec.Checkpoint> checkpoints, List<Obstacle> obstacles,
+                                double diameterM) {
+        double r = random.nextDouble(0.04, 0.08);
+        double gap = random.nextDouble(1.5, 2.5) * diameterM;
+        double pitch = gap + 2 * r;
+        double jitter = 0.1 * gap;
+        for (double y = -2.6; y <= 2.6; y += pitch) {
+            double shift = random.nextBoolean() ? pitch / 2 : 0;
+            for (double x = -2.6 + shift; x <= 2.6; x += pitch) {
+                if (random.nextDouble() < 0.12) {
+                    continue;
+                }
+                obstacles.add(Obstacle.circle(round(x + random.nextDouble(-jitter, jitter) / 2),
+                        round(y + random.nextDouble(-jitter, jitter) / 2), round(r)));
+            }
+        }
+        checkpoints.add(new WorldSpec.Checkpoint(round(random.nextDouble(-1.5, 1.5)), 3.7));
+        if (random.nextBoolean()) {
+            checkpoints.add(new WorldSpec.Checkpoint(round(random.nextBoolean() ? -3.6 : 3.6), round(random.nextDouble(-1.0, 1.0))));
+        }
+    }
+
+    private static final double WALL_M = 0.1;
+
+    /**
+     * A block of 2 × 2 to 3 × 3 rooms in the arena's inscribed square, each wall between two rooms
+     * with a door of 2 to 3 robot diameters (every room joined through a spanning tree, a few walls
+     * with a second way through); the robot starts in one room, the checkpoints are in others.
+     *
+     * @return the robot's start x, y and the station's x, y
+     */
+    private static double[] rooms(SplittableRandom random, List<WorldSpec.Checkpoint> checkpoints, List<Obstacle> obstacles,
+                                  double diameterM) {
+        int nx = 2 + random.nextInt(2);
+        int ny = 2 + random.nextInt(2);
+        double side = 6.6;
+        double rw = side / nx;
+        double rh = side / ny;
+        double x0 = -side / 2;
+        double y0 = -side / 2;
+        boolean[][] doorsV = new boolean[nx - 1][ny]; // wall between room (i, j) and (i + 1, j)
+        boolean[][] doorsH = new boolean[nx][ny - 1]; // wall between room (i, j) and (i, j + 1)
+        spanningTree(random, nx, ny, doorsV, doorsH, 0.2);
+        // the outer walls
+        obstacles.add(Obstacle.box(0, round(y0 - WALL_M / 2), round(side + 2 * WALL_M), WALL_M, 0));
+        obstacles.add(Obstacle.box(0, round(y0 + side + WALL_M / 2), round(side + 2 * WALL_M), WALL_M, 0));
+        obstacles.add(Obstacle.box(round(x0 - WALL_M / 2), 0, WALL_M, round(side + 2 * WALL_M), 0));
+        obstacles.add(Obstacle.box(round(x0 + side + WALL_M / 2), 0, WALL_M, round(side + 2 * WALL_M), 0));
+        for (int i = 0; i < nx - 1; i++) {
+            for (int j = 0; j < ny; j++) {
+                double x = x0 + (i + 1) * rw;
+                wallWithDoor(random, obstacles, true, x, y0 + j * rh, y0 + (j + 1) * rh, doorsV[i][j], diameterM);
+            }
+        }
+        for (int i = 0; i < nx; i++) {
+            for (int j = 0; j < ny - 1; j++) {
+                double y = y0 + (j + 1) * rh;
+                wallWithDoor(random, obstacles, false, y, x0 + i * rw, x0 + (i + 1) * rw, doorsH[i][j], diameterM);
+            }
+        }
+        int si = random.nextInt(nx);
+        int sj = random.nextInt(ny);
+        List<int[]> others = new ArrayList<>();
+        for (int i = 0; i < nx; i++) {
+            for (int j = 0; j < ny; j++) {
+                if (i != si || j != sj) {
+                    others.add(new int[] {i, j});
+                }
+            }
+        }
+        int n = Math.min(others.size(), 2 + random.nextInt(2));
+        for (int k = 0; k < n; k++) {
+            int[] room = others.remove(random.nextInt(others.size()));
+            checkpoints.add(new WorldSpec.Checkpoint(round(x0 + (room[0] + 0.5) * rw + random.nextDouble(-0.3, 0.3) * rw),
+                    round(y0 + (room[1] + 0.5) * rh + random.nextDouble(-0.3, 0.3) * rh)));
+        }
+        double sx = x0 + (si + 0.5) * rw;
+        double sy = y0 + (sj + 0.5) * rh;
+        return new double[] {round(sx), round(sy - 0.25 * rh), round(sx + 0.25 * rw), round(sy + 0.2 * rh)};
+    }
+
+    /** A wall along x = at (vertical) or y = at, from a to b, with a door of 2 to 3 diameters when asked. */
+    private static void wallWithDoor(SplittableRandom random, List<Obstacle> obstacles, boolean vertical, double at,
+                                     double a, double b, boolean door, double diameterM) {
+        List<double[]> pieces = new ArrayList<>();
+        if (door) {
+            double width = Math.min(random.nextDouble(2.0, 3.0) * diameterM, b - a - 0.7);
+            double from = random.nextDouble(a + 0.3, b - 0.3 - width);
+            pieces.add(new double[] {a, from});
+            pieces.add(new double[] {from + width, b});
+        } else {
+            pieces.add(new double[] {a, b});
+        }
+        for (double[] p : pieces) {
+            double len = p[1] - p[0];
+            double mid = (p[0] + p[1]) / 2;
+            obstacles.add(vertical ? Obstacle.box(round(at), round(mid), WALL_M, round(len + WALL_M), 0)
+                    : Obstacle.box(round(mid), round(at), round(len + WALL_M), WALL_M, 0));
+        }
+    }
+
+    /** Opens walls of a grid of cells along a random spanning tree (depth first), and a few more at random. */
+    private static void spanningTree(SplittableRandom random, int nx, int ny, boolean[][] openV, boolean[][] openH,
+                                     double extra) {
+        boolean[][] seen = new boolean[nx][ny];
+        ArrayDeque<int[]> stack = new ArrayDeque<>();
+        stack.push(new int[] {0, 0});
+        seen[0][0] = true;
+        int[][] steps = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+        while (!stack.isEmpty()) {
+            int[] c = stack.peek();
+            List<int[]> next = new ArrayList<>();
+            for (int[] d : steps) {
+                int i = c[0] + d[0];
+                int j = c[1] + d[1];
+                if (i >= 0 && j >= 0 && i < nx && j < ny && !seen[i][j]) {
+                    next.add(new int[] {i, j});
+                }
+            }
+            if (next.isEmpty()) {
+                stack.pop();
+                continue;
+            }
+            int[] n = next.get(random.nextInt(next.size()));
+            if (n[0] != c[0]) {
+                openV[Math.min(n[0], c[0])][c[1]] = true;
+            } else {
+                openH[c[0]][Math.min(n[1], c[1])] = true;
+            }
+            seen[n[0]][n[1]] = true;
+            stack.push(n);
+        }
+        for (boolean[] col : openV) {
+            for (int j = 0; j < col.length; j++) {
+                col[j] |= random.nextDouble() < extra;
+            }
+        }
+        for (boolean[] col : openH) {
+            for (int j = 0; j < col.length; j++) {
+                col[j] |= random.nextDouble() < extra;
+            }
+        }
+    }
+
+    /**
+     * A perfect maze (depth-first) of square cells 2.5 to 3.2 robot diameters wide, 5 to 7 cells a
+     * side, walls merged along each row and column; the robot starts in a corner cell, the
+     * checkpoints are in two far cells.
+     *
+     * @return the robot's start x, y and the station's x, y
+     */
+    private static double[] maze(SplittableRandom random, List<WorldSpec.Checkpoint> checkpoints, List<Obstacle> obstacles,
+                                 double diameterM) {
+        double cell = round(random.nextDouble(2.5, 3.2) * diameterM + WALL_M);
+        int n = Math.min(5 + random.nextInt(3), (int) Math.floor(6.6 / cell));
+        boolean[][] openV = new boolean[n - 1][n];
+        boolean[][] openH = new boolean[n][n - 1];
+        spanningTree(random, n, n, openV, openH, 0.0);
+        double side = n * cell;
+        double x0 = -side / 2;
+        double y0 = -side / 2;
+        // horizontal walls: the outer two, and between rows j and j + 1, merged where consecutive
+        for (int j = 0; j <= n; j++) {
+            double y = y0 + j * cell;
+            int i = 0;
+            while (i < n) {
+                if (j > 0 && j < n && openH[i][j - 1]) {
+                    i++;
+                    continue;
+                }
+                int start = i;
+                while (i < n && (j == 0 || j == n || !openH[i][j - 1])) {
+                    i++;
+                }
+                double a = x0 + start * cell;
+                double b = x0 + i * cell;
+                obstacles.add(Obstacle.box(round((a + b) / 2), round(y), round(b - a + WALL_M), WALL_M, 0));
+            }
+        }
+        for (int i = 0; i <= n; i++) {
+            double x = x0 + i * cell;
+            int j = 0;
+            while (j < n) {
+                if (i > 0 && i < n && openV[i - 1][j]) {
+                    j++;
+                    continue;
+                }
+                int start = j;
+                while (j < n && (i == 0 || i == n || !openV[i - 1][j])) {
+                    j++;
+                }
+                double a = y0 + start * cell;
+                double b = y0 + j * cell;
+                obstacles.add(Obstacle.box(round(x), round((a + b) / 2), WALL_M, round(b - a + WALL_M), 0));
+            }
+        }
+        checkpoints.add(new WorldSpec.Checkpoint(round(x0 + (n - 0.5) * cell), round(y0 + (n - 0.5) * cell)));
+        int ci = random.nextInt(n);
+        checkpoints.add(new WorldSpec.Checkpoint(round(x0 + (ci + 0.5) * cell), round(y0 + (n / 2 + 0.5) * cell)));
+        double sx = x0 + 0.5 * cell;
+        double sy = y0 + 0.5 * cell;
+        return new double[] {round(sx), round(sy), round(sx), round(sy)};
     }
 
     private static double round(double v) {

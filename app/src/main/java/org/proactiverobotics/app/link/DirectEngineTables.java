@@ -9,7 +9,9 @@ import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
+import org.proactiverobotics.engine.tables.MapChunk;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
@@ -20,7 +22,8 @@ import org.proactiverobotics.engine.tables.StrategyTable;
  * The engine side of a {@link DirectLink} for one robot: the same table interfaces as
  * JdbcRobotTables, over the link's memory. Never throws for want of a database.
  */
-public final class DirectEngineTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments {
+public final class DirectEngineTables
+        implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments, OccupancyMapTable {
 
     private final DirectRows rows;
 
@@ -76,6 +79,21 @@ public final class DirectEngineTables implements SensorReadings, SensorRequests,
     @Override
     public void markReached(int seq, long simTimeMs) {
         rows.markReached(seq);
+    }
+
+    @Override
+    public void markUnreachable(int seq, long simTimeMs) {
+        rows.markUnreachable(seq);
+    }
+
+    @Override
+    public List<MapChunk> readMap() {
+        return rows.readMap();
+    }
+
+    @Override
+    public void writeChunks(List<MapChunk> chunks, long simTimeMs) {
+        rows.writeChunks(chunks);
     }
 
     @Override

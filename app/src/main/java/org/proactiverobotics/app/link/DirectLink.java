@@ -63,6 +63,11 @@ public final class DirectLink implements RobotLink {
     }
 
     @Override
+    public boolean checkpointUnreachable(int robotId) {
+        return rows(robotId).checkpointUnreachable();
+    }
+
+    @Override
     public boolean seedMission(int robotId, MissionSpec mission) {
         return rows(robotId).seed(mission);
     }

@@ -6,11 +6,13 @@ import java.util.Comparator;
 import java.util.Iterator;
 import java.util.List;
 import java.util.Optional;
+import java.util.TreeMap;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
+import org.proactiverobotics.engine.tables.MapChunk;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.engine.tables.StrategyTable;
 import org.proactiverobotics.robot.link.BatteryReading;
@@ -53,6 +55,9 @@ final class DirectRows {
     private Station station;
     private Double rechargeLevelPct;
     private List<StrategyTable.Entry> strategy = List.of();
+    /** occupancy_map rows by (chunk_x, chunk_y), in the JDBC read's order. */
+    private final TreeMap<List<Integer>, MapChunk> map = new TreeMap<>(
+            Comparator.<List<Integer>>comparingInt(k -> k.get(0)).thenComparingInt(k -> k.get(1)));
     private long requestIds;
     private long commandIds;
 
@@ -206,10 +211,44 @@ final class DirectRows {
         for (int i = 0; i < rows.size(); i++) {
             Checkpoint c = rows.get(i);
             if (c.seq() == seq) {
-                rows.set(i, new Checkpoint(c.seq(), c.xM(), c.yM(), c.radiusM(), true));
+                rows.set(i, new Checkpoint(c.seq(), c.xM(), c.yM(), c.radiusM(), true, c.unreachable()));
             }
         }
         checkpoints = List.copyOf(rows);
+    }
+
+    synchronized void markUnreachable(int seq) {
+        List<Checkpoint> rows = new ArrayList<>(checkpoints);
+        for (int i = 0; i < rows.size(); i++) {
+            Checkpoint c = rows.get(i);
+            if (c.seq() == seq) {
+                rows.set(i, new Checkpoint(c.seq(), c.xM(), c.yM(), c.radiusM(), c.reached(), true));
+            }
+        }
+        checkpoints = List.copyOf(rows);
+    }
+
+    synchronized boolean checkpointUnreachable() {
+        for (Checkpoint c : checkpoints) {
+            if (c.unreachable()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    synchronized List<MapChunk> readMap() {
+        List<MapChunk> out = new ArrayList<>(map.size());
+        for (MapChunk c : map.values()) {
+            out.add(new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
+        }
+        return out;
+    }
+
+    synchronized void writeChunks(List<MapChunk> chunks) {
+        for (MapChunk c : chunks) {
+            map.put(List.of(c.chunkX(), c.chunkY()), new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
+        }
     }
 
     synchronized Station station() {

@@ -196,7 +196,7 @@ public final class Mission {
                 markers.add(new SvgRenderer.Marker(truth.x(), truth.y(), "recharge " + recharges));
             }
             stepHook.accept(sim);
-            outcome = Outcome.of(sim);
+            outcome = Outcome.of(sim, controller.checkpointUnreachable());
             if (outcome != null) {
                 break;
             }

@@ -11,6 +11,8 @@ public enum Outcome {
     TIME_LIMIT,
     /** The battery ran flat. */
     BATTERY_DEPLETED,
+    /** The engine found no route to a checkpoint even with every unknown cell free, and ended the mission. */
+    CHECKPOINT_UNREACHABLE,
     /** The robot process was stopped (SIGTERM / Ctrl-C) before the mission ended. */
     STOPPED;
 
@@ -33,5 +35,18 @@ public enum Outcome {
             return TIME_LIMIT;
         }
         return null;
+    }
+
+    /**
+     * {@link #of(Simulation)}, then whether the engine marked a checkpoint unreachable (read by
+     * the robot side from {@code checkpoints}).
+     *
+     * @param sim         the simulation
+     * @param unreachable whether the robot side has read an unreachable mark
+     * @return the outcome, or null while the mission goes on
+     */
+    public static Outcome of(Simulation sim, boolean unreachable) {
+        Outcome outcome = of(sim);
+        return outcome == null && unreachable ? CHECKPOINT_UNREACHABLE : outcome;
     }
 }

@@ -36,6 +36,7 @@ public record MissionResult(SweepMission mission, String outcome, boolean succes
             case MISSION_ACCOMPLISHED -> "";
             case TIME_LIMIT -> "maxSimTimeS (" + mission.world().maxSimTimeS() + " s) ran out";
             case BATTERY_DEPLETED -> "the battery ran flat";
+            case CHECKPOINT_UNREACHABLE -> "no route to a checkpoint";
             case STOPPED -> "stopped";
         };
         return new MissionResult(mission, report.outcome().name(), report.success(), report.checkpointsReached(),

@@ -30,11 +30,13 @@ import org.proactiverobotics.engine.scenario.dataacquisition.DataAcquisitionScen
 import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
 import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
 import org.proactiverobotics.engine.scenario.destination.ReachDestinationScenario;
+import org.proactiverobotics.engine.scenario.mapping.MappingScenario;
 import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.StrategyTable;
@@ -65,16 +67,17 @@ import org.slf4j.LoggerFactory;
 public final class RobotEngine {
 
     /** The start order, for the javadoc. */
-    static final String ORDER_TEXT = "DataAcquisition, BatteryMonitor, ReachDestination, ObstacleAvoidance,"
+    static final String ORDER_TEXT = "DataAcquisition, Mapping, BatteryMonitor, ReachDestination, ObstacleAvoidance,"
             + " the plug-ins in the order given, FailSafe, DecisionMaking";
     /** Prune the engine's history every this many iterations. */
     public static final int PRUNE_EVERY = 100;
     /** Keep this many of the robot's newest commands, answered requests and rule failures. */
     public static final int KEEP_ROWS = 1000;
 
-    /** Built-in scenarios started before the plug-ins (the paper's 1 → 4 → 2 → 3), with their slots (-1: none). */
+    /** Built-in scenarios started before the plug-ins (the paper's 1 → 4 → 2 → 3, Mapping after 1), with their slots (-1: none). */
     private static final Map<String, Integer> FIRST = orderedMap(
             DataAcquisitionScenario.NAME, -1,
+            MappingScenario.NAME, -1,
             BatteryMonitorScenario.NAME, 1,
             ReachDestinationScenario.NAME, 0,
             ObstacleAvoidanceScenario.NAME, 2);
@@ -277,6 +280,11 @@ public final class RobotEngine {
         return Collections.unmodifiableMap(map);
     }
 
+    /** The layer's map rows when its mission tables have them, else a map kept in memory. */
+    private static OccupancyMapTable mapTable(EngineTables base) {
+        return base.mission() instanceof OccupancyMapTable map ? map : OccupancyMapTable.inMemory();
+    }
+
     /** Configures a {@link RobotEngine}; every setting but the tables has a default. */
     public static final class Builder {
         private int robotId = 1;
@@ -416,6 +424,7 @@ public final class RobotEngine {
                     .service(MissionTables.class, wired.mission())
                     .service(StrategyTable.class, wired.strategy())
                     .service(EngineComments.class, wired.comments())
+                    .service(OccupancyMapTable.class, mapTable(base))
                     .service(DriveProfile.class, drive);
             freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {

@@ -22,7 +22,8 @@ import org.proactiverobotics.engine.IterationTransaction;
  * commits, and the iteration's command goes on that connection at once: a constant, small number of round trips per iteration whatever the
  * rules ask. Outside an iteration every call is its own statement, as before.
  */
-public final class JdbcRobotTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments {
+public final class JdbcRobotTables
+        implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments, OccupancyMapTable {
 
     private final DataSource dataSource;
     private final int robotId;
@@ -258,8 +259,9 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
             return snap.checkpoints();
         }
         return queryAll("checkpoints",
-                "SELECT seq, x_m, y_m, radius_m, reached FROM checkpoints WHERE robot_id = ? ORDER BY seq",
-                rs -> new Checkpoint(rs.getInt(1), rs.getDouble(2), rs.getDouble(3), rs.getDouble(4), rs.getBoolean(5)));
+                "SELECT seq, x_m, y_m, radius_m, reached, unreachable FROM checkpoints WHERE robot_id = ? ORDER BY seq",
+                rs -> new Checkpoint(rs.getInt(1), rs.getDouble(2), rs.getDouble(3), rs.getDouble(4), rs.getBoolean(5),
+                        rs.getBoolean(6)));
     }
 
     @Override
@@ -272,6 +274,49 @@ public final class JdbcRobotTables implements SensorReadings, SensorRequests, Mi
         update("marking checkpoint " + seq + " reached",
                 "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?",
                 simTimeMs, robotId, seq);
+    }
+
+    @Override
+    public void markUnreachable(int seq, long simTimeMs) {
+        update("marking checkpoint " + seq + " unreachable",
+                "UPDATE checkpoints SET unreachable = TRUE WHERE robot_id = ? AND seq = ?", robotId, seq);
+    }
+
+    @Override
+    public List<MapChunk> readMap() {
+        return queryAll("occupancy map",
+                "SELECT chunk_x, chunk_y, cells FROM occupancy_map WHERE robot_id = ? ORDER BY chunk_x, chunk_y",
+                rs -> new MapChunk(rs.getInt(1), rs.getInt(2), rs.getBytes(3)));
+    }
+
+    /** Replaces each chunk's row (delete, then insert: the same two statements on every database). */
+    @Override
+    public void writeChunks(List<MapChunk> chunks, long simTimeMs) {
+        if (chunks.isEmpty()) {
+            return;
+        }
+        try (Connection c = dataSource.getConnection();
+             PreparedStatement delete = c.prepareStatement(
+                     "DELETE FROM occupancy_map WHERE robot_id = ? AND chunk_x = ? AND chunk_y = ?");
+             PreparedStatement insert = c.prepareStatement(
+                     "INSERT INTO occupancy_map (robot_id, chunk_x, chunk_y, cells, updated_sim_time_ms) VALUES (?, ?, ?, ?, ?)")) {
+            for (MapChunk chunk : chunks) {
+                delete.setInt(1, robotId);
+                delete.setInt(2, chunk.chunkX());
+                delete.setInt(3, chunk.chunkY());
+                delete.addBatch();
+                insert.setInt(1, robotId);
+                insert.setInt(2, chunk.chunkX());
+                insert.setInt(3, chunk.chunkY());
+                insert.setBytes(4, chunk.cells());
+                insert.setLong(5, simTimeMs);
+                insert.addBatch();
+            }
+            delete.executeBatch();
+            insert.executeBatch();
+        } catch (SQLException e) {
+            throw new TablesException("writing " + chunks.size() + " occupancy-map chunk(s) of robot " + robotId, e);
+        }
     }
 
     @Override

@@ -18,6 +18,16 @@ public interface MissionTables {
      */
     void markReached(int seq, long simTimeMs);
 
+    /**
+     * Marks a checkpoint unreachable: no route leads to it, the mission ends there.
+     *
+     * @param seq       the checkpoint
+     * @param simTimeMs when, simulated milliseconds
+     */
+    default void markUnreachable(int seq, long simTimeMs) {
+        throw new UnsupportedOperationException("these mission tables cannot mark checkpoint " + seq + " unreachable");
+    }
+
     /** @return the recharge station, if the mission has one */
     Optional<Station> rechargeStation();
 

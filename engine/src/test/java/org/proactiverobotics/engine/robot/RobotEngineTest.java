@@ -19,7 +19,7 @@ class RobotEngineTest {
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             Schema.apply(db.dataSource());
             RobotEngine engine = RobotEngine.builder().database(db.dataSource()).plugins(ScenarioPlugins.of(new Alpha())).build();
-            assertThat(engine.scenarios()).containsExactly("DataAcquisition", "BatteryMonitor", "ReachDestination",
+            assertThat(engine.scenarios()).containsExactly("DataAcquisition", "Mapping", "BatteryMonitor", "ReachDestination",
                     "ObstacleAvoidance", "Alpha", "FailSafe", "DecisionMaking");
             engine.startFresh();
             assertThat(engine.slots()).containsExactly(Map.entry("ReachDestination", 0), Map.entry("BatteryMonitor", 1),

@@ -208,6 +208,19 @@ public final class JdbcRobotLink implements RobotLink {
     }
 
     @Override
+    public boolean checkpointUnreachable(int robotId) throws LinkException {
+        return withConnection("reading checkpoints", c -> {
+            try (PreparedStatement ps = prepare(c,
+                    "SELECT COUNT(*) FROM checkpoints WHERE robot_id = ? AND unreachable = TRUE")) {
+                ps.setInt(1, robotId);
+                try (ResultSet rs = ps.executeQuery()) {
+                    return rs.next() && rs.getLong(1) > 0;
+                }
+            }
+        });
+    }
+
+    @Override
     public boolean seedMission(int robotId, MissionSpec mission) throws LinkException {
         return withConnection("seeding the mission rows", c -> {
             c.setAutoCommit(false);

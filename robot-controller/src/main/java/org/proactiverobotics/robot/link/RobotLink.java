@@ -64,6 +64,18 @@ public interface RobotLink extends AutoCloseable {
     boolean seedMission(int robotId, MissionSpec mission) throws LinkException;
 
     /**
+     * Whether the engine has marked one of this robot's checkpoints unreachable (no route leads
+     * there): the mission is over.
+     *
+     * @param robotId the robot
+     * @return true when a checkpoint row is marked unreachable
+     * @throws LinkException when the checkpoints cannot be read
+     */
+    default boolean checkpointUnreachable(int robotId) throws LinkException {
+        return false;
+    }
+
+    /**
      * Deletes this robot's reading history beyond what the policy keeps.
      *
      * @param robotId the robot

@@ -11,7 +11,8 @@ import org.proactiverobotics.engine.tables.MissionTables;
 /**
  * Finds the first checkpoint not yet reached and generates MoveToCheckpoint for it. When every
  * checkpoint is reached the destination is reached: it suggests STOP and keeps looking, in
- * case the mission gets new checkpoints.
+ * case the mission gets new checkpoints. When that checkpoint is marked unreachable the mission
+ * is over: it suggests STOP too.
  */
 public final class GetCheckpoint extends Rule {
 
@@ -35,10 +36,10 @@ public final class GetCheckpoint extends Rule {
         return !all.isEmpty();
     }
 
-    /** Condition: every checkpoint is reached. */
+    /** Condition: every checkpoint is reached, or the next one cannot be. */
     @Override
     protected boolean conditions(RuleContext ctx) {
-        return next == null;
+        return next == null || next.unreachable();
     }
 
     @Override
@@ -48,7 +49,7 @@ public final class GetCheckpoint extends Rule {
 
     @Override
     protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
-        if (outcome.guardsHeld() && next != null) {
+        if (outcome.guardsHeld() && next != null && !next.unreachable()) {
             ctx.generate(new MoveToCheckpoint(next.seq(), next.xM(), next.yM(), next.radiusM()));
         } else {
             ctx.generate(this);

@@ -1,0 +1,313 @@
+package org.proactiverobotics.engine.scenario.destination;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+
+/**
+ * A* on the occupancy map known so far, unknown cells taken as free, on the robot's footprint:
+ * a cell whose centre lies closer than the robot's radius to an occupied cell's centre is
+ * blocked, and cells up to {@value #SOFT_ZONE_M} m beyond cost more, so routes keep off walls
+ * where they can. The search covers the known map, the robot and the goal, with
+ * {@value #MARGIN_M} m around. Cells within {@value #START_CLEAR_M} m of the start are blocked only
+ * when occupied (the robot is already there).
+ */
+final class RoutePlanner {
+
+    /** Cells up to this far beyond the blocked band cost more, metres. */
+    static final double SOFT_ZONE_M = 0.2;
+    /** Extra cost of a cell at the blocked band's edge, in tenths of a cell's step. */
+    static final int SOFT_COST = 40;
+    /** Room searched beyond the known map, the robot and the goal, metres. */
+    static final double MARGIN_M = 1.0;
+    /** A straight drive to a route point keeps this much more than the robot's radius from occupied cells, metres. */
+    static final double SIGHT_MARGIN_M = 0.06;
+    /** Cells this close to the start are blocked only when occupied, metres. */
+    static final double START_CLEAR_M = 0.25;
+
+    /** The blocked cells of one plan's area, for line-of-sight checks between plans. */
+    static final class Grid {
+        final int i0;
+        final int j0;
+        final int w;
+        final int h;
+        final boolean[] blocked;
+        final boolean[] occupied;
+        /** A cell's distance to the nearest occupied cell, metres (capped). */
+        final float[] clearance;
+        final int[] extra;
+        /** The robot's radius plus {@value #SIGHT_MARGIN_M} m: a straight drive keeps this far from occupied cells. */
+        double sightClearanceM;
+
+        Grid(int i0, int j0, int w, int h) {
+            this.i0 = i0;
+            this.j0 = j0;
+            this.w = w;
+            this.h = h;
+            this.blocked = new boolean[w * h];
+            this.occupied = new boolean[w * h];
+            this.clearance = new float[w * h];
+            this.extra = new int[w * h];
+        }
+
+        /** @return whether a straight drive may not cross a cell (map column, row); outside the area counts as free */
+        boolean blockedAt(int i, int j, boolean nearStart) {
+            int a = i - i0;
+            int b = j - j0;
+            if (a < 0 || b < 0 || a >= w || b >= h) {
+                return false;
+            }
+            int k = b * w + a;
+            return nearStart ? occupied[k] : clearance[k] < sightClearanceM;
+        }
+
+        /**
+         * @return whether the segment crosses no blocked cell (sampled every half cell); within
+         *         {@code clearM} of its start only occupied cells count (the robot may already be close to a wall)
+         */
+        boolean visible(double x0, double y0, double x1, double y1, double clearM) {
+            double len = Math.hypot(x1 - x0, y1 - y0);
+            int n = (int) Math.ceil(len / (OccupancyMap.CELL_M / 2));
+            for (int k = 1; k <= n; k++) {
+                double t = (double) k / n;
+                if (blockedAt(OccupancyMap.cell(x0 + t * (x1 - x0)), OccupancyMap.cell(y0 + t * (y1 - y0)), t * len < clearM)) {
+                    return false;
+                }
+            }
+            return true;
+        }
+    }
+
+    /**
+     * A planned route.
+     *
+     * @param xs   the route's points' x, metres, from the start to the goal
+     * @param ys   their y, metres
+     * @param grid the blocked cells it was planned on
+     */
+    record Route(double[] xs, double[] ys, Grid grid) {
+
+        /** @return the route's length, metres */
+        double lengthM() {
+            double sum = 0;
+            for (int k = 1; k < xs.length; k++) {
+                sum += Math.hypot(xs[k] - xs[k - 1], ys[k] - ys[k - 1]);
+            }
+            return sum;
+        }
+    }
+
+    private RoutePlanner() {
+    }
+
+    /**
+     * @param map           the map known so far
+     * @param sx            start x, metres
+     * @param sy            start y, metres
+     * @param gx            goal x, metres
+     * @param gy            goal y, metres
+     * @param goalReachM    any cell centre this close to the goal will do, metres
+     * @param robotRadiusM  the robot's radius, metres
+     * @return the route, or null when none exists even with every unknown cell free
+     */
+    static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM) {
+        double c = OccupancyMap.CELL_M;
+        int margin = (int) Math.ceil(MARGIN_M / c);
+        int si = OccupancyMap.cell(sx);
+        int sj = OccupancyMap.cell(sy);
+        int gi = OccupancyMap.cell(gx);
+        int gj = OccupancyMap.cell(gy);
+        int lo_i = Math.min(si, gi);
+        int hi_i = Math.max(si, gi);
+        int lo_j = Math.min(sj, gj);
+        int hi_j = Math.max(sj, gj);
+        if (!map.isEmpty()) {
+            lo_i = Math.min(lo_i, map.minCell(true));
+            lo_j = Math.min(lo_j, map.minCell(false));
+            hi_i = Math.max(hi_i, map.maxCellExclusive(true) - 1);
+            hi_j = Math.max(hi_j, map.maxCellExclusive(false) - 1);
+        }
+        Grid g = new Grid(lo_i - margin, lo_j - margin, hi_i - lo_i + 1 + 2 * margin, hi_j - lo_j + 1 + 2 * margin);
+        g.sightClearanceM = robotRadiusM + SIGHT_MARGIN_M;
+        int w = g.w;
+        int h = g.h;
+        int n = w * h;
+
+        // Chamfer distance (3-4, in thirds of a cell) to the nearest occupied cell, capped.
+        int cap = (int) Math.ceil((robotRadiusM + SOFT_ZONE_M) / c) * 3 + 4;
+        int[] dist = new int[n];
+        Arrays.fill(dist, cap);
+        for (int b = 0; b < h; b++) {
+            for (int a = 0; a < w; a++) {
+                if (map.get(g.i0 + a, g.j0 + b) == OccupancyMap.OCCUPIED) {
+                    dist[b * w + a] = 0;
+                }
+            }
+        }
+        for (int b = 0; b < h; b++) {
+            for (int a = 0; a < w; a++) {
+                int k = b * w + a;
+                int d = dist[k];
+                if (a > 0) d = Math.min(d, dist[k - 1] + 3);
+                if (b > 0) {
+                    d = Math.min(d, dist[k - w] + 3);
+                    if (a > 0) d = Math.min(d, dist[k - w - 1] + 4);
+                    if (a < w - 1) d = Math.min(d, dist[k - w + 1] + 4);
+                }
+                dist[k] = d;
+            }
+        }
+        for (int b = h - 1; b >= 0; b--) {
+            for (int a = w - 1; a >= 0; a--) {
+                int k = b * w + a;
+                int d = dist[k];
+                if (a < w - 1) d = Math.min(d, dist[k + 1] + 3);
+                if (b < h - 1) {
+                    d = Math.min(d, dist[k + w] + 3);
+                    if (a < w - 1) d = Math.min(d, dist[k + w + 1] + 4);
+                    if (a > 0) d = Math.min(d, dist[k + w - 1] + 4);
+                }
+                dist[k] = d;
+            }
+        }
+        double clear2 = START_CLEAR_M * START_CLEAR_M;
+        for (int b = 0; b < h; b++) {
+            for (int a = 0; a < w; a++) {
+                int k = b * w + a;
+                double dm = dist[k] / 3.0 * c;
+                g.clearance[k] = (float) dm;
+                double ox = OccupancyMap.centre(g.i0 + a) - sx;
+                double oy = OccupancyMap.centre(g.j0 + b) - sy;
+                if (dist[k] == 0 || (dm < robotRadiusM && ox * ox + oy * oy > clear2)) {
+                    g.blocked[k] = true; // occupied cells stay blocked even next to the start
+                    g.occupied[k] = dist[k] == 0;
+                } else if (dm < robotRadiusM + SOFT_ZONE_M) {
+                    g.extra[k] = (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - robotRadiusM) / SOFT_ZONE_M));
+                }
+            }
+        }
+
+        // A* over 8 neighbours, steps 10 and 14, no corner cutting; any cell near enough to the goal ends it.
+        int start = (sj - g.j0) * w + (si - g.i0);
+        double reach2 = goalReachM * goalReachM;
+        int reachTenths = (int) Math.floor(goalReachM / c * 10);
+        int[] cost = new int[n];
+        Arrays.fill(cost, Integer.MAX_VALUE);
+        int[] from = new int[n];
+        boolean[] closed = new boolean[n];
+        long[] heap = new long[1024];
+        int size = 0;
+        cost[start] = 0;
+        from[start] = -1;
+        heap[size++] = ((long) heuristic(si, sj, gi, gj, reachTenths) << 32) | start;
+        int[] di = {1, -1, 0, 0, 1, 1, -1, -1};
+        int[] dj = {0, 0, 1, -1, 1, -1, 1, -1};
+        int end = -1;
+        while (size > 0) {
+            long top = heap[0];
+            heap[0] = heap[--size];
+            siftDown(heap, size);
+            int k = (int) top;
+            if (closed[k]) {
+                continue;
+            }
+            closed[k] = true;
+            int a = k % w;
+            int b = k / w;
+            double ex = OccupancyMap.centre(g.i0 + a) - gx;
+            double ey = OccupancyMap.centre(g.j0 + b) - gy;
+            if (ex * ex + ey * ey <= reach2 || (g.i0 + a == gi && g.j0 + b == gj)) {
+                end = k;
+                break;
+            }
+            for (int d = 0; d < 8; d++) {
+                int na = a + di[d];
+                int nb = b + dj[d];
+                if (na < 0 || nb < 0 || na >= w || nb >= h) {
+                    continue;
+                }
+                int nk = nb * w + na;
+                if (g.blocked[nk] || closed[nk]) {
+                    continue;
+                }
+                if (d >= 4 && (g.blocked[b * w + na] || g.blocked[nb * w + a])) {
+                    continue;
+                }
+                int nc = cost[k] + (d < 4 ? 10 : 14) + g.extra[nk];
+                if (nc < cost[nk]) {
+                    cost[nk] = nc;
+                    from[nk] = k;
+                    long f = nc + (long) heuristic(g.i0 + na, g.j0 + nb, gi, gj, reachTenths);
+                    if (size == heap.length) {
+                        heap = Arrays.copyOf(heap, size * 2);
+                    }
+                    heap[size++] = (f << 32) | nk;
+                    siftUp(heap, size - 1);
+                }
+            }
+        }
+        if (end < 0) {
+            return null;
+        }
+        List<Integer> cells = new ArrayList<>();
+        for (int k = end; k >= 0; k = from[k]) {
+            cells.add(k);
+        }
+        int m = cells.size();
+        double[] xs = new double[m + 1];
+        double[] ys = new double[m + 1];
+        xs[0] = sx;
+        ys[0] = sy;
+        for (int q = 1; q < m; q++) {
+            int k = cells.get(m - 1 - q);
+            xs[q] = OccupancyMap.centre(g.i0 + k % w);
+            ys[q] = OccupancyMap.centre(g.j0 + k / w);
+        }
+        xs[m] = gx;
+        ys[m] = gy;
+        return new Route(xs, ys, g);
+    }
+
+    private static int heuristic(int i, int j, int gi, int gj, int reachTenths) {
+        int dx = Math.abs(i - gi);
+        int dy = Math.abs(j - gj);
+        int octile = 10 * Math.max(dx, dy) + 4 * Math.min(dx, dy);
+        return Math.max(0, octile - reachTenths);
+    }
+
+    private static void siftUp(long[] heap, int k) {
+        long v = heap[k];
+        while (k > 0) {
+            int p = (k - 1) >>> 1;
+            if (heap[p] <= v) {
+                break;
+            }
+            heap[k] = heap[p];
+            k = p;
+        }
+        heap[k] = v;
+    }
+
+    private static void siftDown(long[] heap, int size) {
+        if (size == 0) {
+            return;
+        }
+        long v = heap[0];
+        int k = 0;
+        while (true) {
+            int l = 2 * k + 1;
+            if (l >= size) {
+                break;
+            }
+            int r = l + 1;
+            int s = r < size && heap[r] < heap[l] ? r : l;
+            if (heap[s] >= v) {
+                break;
+            }
+            heap[k] = heap[s];
+            k = s;
+        }
+        heap[k] = v;
+    }
+}

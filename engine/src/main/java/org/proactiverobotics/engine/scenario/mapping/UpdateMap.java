@@ -1,0 +1,159 @@
+package org.proactiverobotics.engine.scenario.mapping;
+
+import java.util.List;
+import org.proactiverobotics.engine.Outcome;
+import org.proactiverobotics.engine.Rule;
+import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.tables.DistanceScan;
+import org.proactiverobotics.engine.tables.GpsFix;
+import org.proactiverobotics.engine.tables.Heading;
+import org.proactiverobotics.engine.tables.MapChunk;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+import org.proactiverobotics.engine.tables.OccupancyMapTable;
+import org.proactiverobotics.engine.tables.SensorReadings;
+
+/**
+ * Adds each new distance scan to the map: along every ray, the cells it crossed become free and
+ * the cell where it hit (a reading shorter than the range) occupied. The scan is placed at the
+ * GPS and inertial-unit readings of the same moment (within {@value #SAME_MOMENT_MS} ms); a scan
+ * without them is skipped. A chunk that gained an occupied cell is written at once, so the
+ * obstacles of the stored map are always those the engine's last committed iteration knew (a
+ * resumed engine reloads them and plans the same routes); chunks where only free cells changed
+ * are written every {@value #FREE_FLUSH_SCANS} scans (a resumed engine may lack a few free marks,
+ * which planners take as unknown, that is free, anyway). Clones itself every iteration.
+ */
+public final class UpdateMap extends Rule {
+
+    /** Readings this close in simulated time are taken as one moment, ms. */
+    static final long SAME_MOMENT_MS = 40;
+
+    /** Chunks where only free cells changed are written every this many scans. */
+    public static final int FREE_FLUSH_SCANS = 32;
+
+    /** The simulated time of the last scan added, ms (-1: none yet). */
+    private long lastScanMs = -1;
+    /** Scans added since every changed chunk was last written. */
+    private int scansSinceFlush;
+
+    /** The map as stored, loaded on the first run after a start or a resume. */
+    private transient OccupancyMap map;
+    private transient DistanceScan scan;
+    private transient GpsFix position;
+    private transient Heading heading;
+
+    @Override
+    public String scenario() {
+        return MappingScenario.NAME;
+    }
+
+    @Override
+    protected void acquireGuardData(RuleContext ctx) {
+        SensorReadings readings = ctx.service(SensorReadings.class);
+        scan = readings.newestScan().orElse(null);
+    }
+
+    /** Guard: a scan the map does not hold yet. */
+    @Override
+    protected boolean activationGuards(RuleContext ctx) {
+        return scan != null && scan.simTimeMs() > lastScanMs;
+    }
+
+    @Override
+    protected void acquireConditionData(RuleContext ctx) {
+        SensorReadings readings = ctx.service(SensorReadings.class);
+        position = readings.newestGps().orElse(null);
+        heading = readings.newestHeading().orElse(null);
+    }
+
+    /** Condition: the robot's pose at the scan's moment is known. */
+    @Override
+    protected boolean conditions(RuleContext ctx) {
+        return position != null && heading != null
+                && Math.abs(position.simTimeMs() - scan.simTimeMs()) <= SAME_MOMENT_MS
+                && Math.abs(heading.simTimeMs() - scan.simTimeMs()) <= SAME_MOMENT_MS;
+    }
+
+    @Override
+    protected void actions(RuleContext ctx) {
+        OccupancyMapTable table = ctx.service(OccupancyMapTable.class);
+        if (map == null) {
+            map = OccupancyMap.of(table.readMap());
+        }
+        double radiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
+        addScan(map, position.xM(), position.yM(), heading.yawRad(), radiusM, scan);
+        lastScanMs = scan.simTimeMs();
+        List<MapChunk> changed = ++scansSinceFlush >= FREE_FLUSH_SCANS ? map.takeChanged() : map.takeGainedOccupied();
+        if (scansSinceFlush >= FREE_FLUSH_SCANS) {
+            scansSinceFlush = 0;
+        }
+        if (!changed.isEmpty()) {
+            table.writeChunks(changed, scan.simTimeMs());
+        }
+    }
+
+    @Override
+    protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
+        ctx.generate(this);
+    }
+
+    /**
+     * Marks one scan's rays on a map.
+     *
+     * @param map     the map
+     * @param xM      the robot's x at the scan, metres
+     * @param yM      its y, metres
+     * @param yawRad  its heading, radians
+     * @param radiusM its body's radius (the rays start at the rim), metres
+     * @param scan    the scan
+     */
+    public static void addScan(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, DistanceScan scan) {
+        for (int k = 0; k < scan.anglesRad().length; k++) {
+            double d = scan.distancesM()[k];
+            if (!(d >= 0) || !Double.isFinite(d)) {
+                continue; // a reading that is not a number marks nothing
+            }
+            boolean hit = d < scan.rangeM() - 1e-6;
+            double a = yawRad + scan.anglesRad()[k];
+            double reach = radiusM + Math.min(d, scan.rangeM());
+            double ex = xM + Math.cos(a) * reach;
+            double ey = yM + Math.sin(a) * reach;
+            traverse(map, xM, yM, ex, ey, hit);
+        }
+    }
+
+    /** Walks the cells from (x0, y0) to (x1, y1) (Amanatides-Woo): free on the way, the last occupied on a hit. */
+    private static void traverse(OccupancyMap map, double x0, double y0, double x1, double y1, boolean hit) {
+        int i = OccupancyMap.cell(x0);
+        int j = OccupancyMap.cell(y0);
+        int ei = OccupancyMap.cell(x1);
+        int ej = OccupancyMap.cell(y1);
+        double dx = x1 - x0;
+        double dy = y1 - y0;
+        int si = dx > 0 ? 1 : -1;
+        int sj = dy > 0 ? 1 : -1;
+        double c = OccupancyMap.CELL_M;
+        double tdx = dx == 0 ? Double.POSITIVE_INFINITY : Math.abs(c / dx);
+        double tdy = dy == 0 ? Double.POSITIVE_INFINITY : Math.abs(c / dy);
+        double nextX = dx == 0 ? Double.POSITIVE_INFINITY : ((si > 0 ? (i + 1) * c : i * c) - x0) / dx;
+        double nextY = dy == 0 ? Double.POSITIVE_INFINITY : ((sj > 0 ? (j + 1) * c : j * c) - y0) / dy;
+        int guard = Math.abs(ei - i) + Math.abs(ej - j) + 2;
+        while ((i != ei || j != ej) && guard-- > 0) {
+            if (map.get(i, j) == OccupancyMap.UNKNOWN) {
+                map.set(i, j, OccupancyMap.FREE); // occupied cells stay occupied: the world is static
+            }
+            if (nextX < nextY) {
+                nextX += tdx;
+                i += si;
+            } else {
+                nextY += tdy;
+                j += sj;
+            }
+        }
+        if (hit) {
+            map.set(ei, ej, OccupancyMap.OCCUPIED);
+        } else if (map.get(ei, ej) == OccupancyMap.UNKNOWN) {
+            map.set(ei, ej, OccupancyMap.FREE);
+        }
+    }
+}

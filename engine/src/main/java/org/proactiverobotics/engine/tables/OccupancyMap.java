@@ -1,0 +1,164 @@
+package org.proactiverobotics.engine.tables;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * A sparse occupancy grid in chunks, as stored in {@code occupancy_map}: cells of
+ * {@value #CELL_M} m, each unknown, free or occupied; a cell never seen is unknown. Remembers
+ * which chunks changed since they were last taken ({@link #takeChanged()}). Not thread-safe.
+ */
+public final class OccupancyMap {
+
+    /** A cell's side, metres. */
+    public static final double CELL_M = 0.05;
+    /** Cells along a chunk's side. */
+    public static final int CHUNK_CELLS = 16;
+    /** Never seen. */
+    public static final byte UNKNOWN = 0;
+    /** A ray crossed it. */
+    public static final byte FREE = 1;
+    /** A ray ended on it. */
+    public static final byte OCCUPIED = 2;
+
+    private final Map<Long, byte[]> chunks = new HashMap<>();
+    private final Set<Long> changed = new LinkedHashSet<>();
+    /** The changed chunks that gained an occupied cell. */
+    private final Set<Long> gainedOccupied = new LinkedHashSet<>();
+    private int minCx = Integer.MAX_VALUE;
+    private int minCy = Integer.MAX_VALUE;
+    private int maxCx = Integer.MIN_VALUE;
+    private int maxCy = Integer.MIN_VALUE;
+
+    /** @return an empty map */
+    public static OccupancyMap empty() {
+        return new OccupancyMap();
+    }
+
+    /**
+     * @param rows the stored chunks
+     * @return the map they hold, nothing marked changed
+     */
+    public static OccupancyMap of(List<MapChunk> rows) {
+        OccupancyMap map = new OccupancyMap();
+        for (MapChunk c : rows) {
+            map.chunks.put(key(c.chunkX(), c.chunkY()), c.cells().clone());
+            map.extend(c.chunkX(), c.chunkY());
+        }
+        return map;
+    }
+
+    static long key(int cx, int cy) {
+        return ((long) cx << 32) | (cy & 0xffffffffL);
+    }
+
+    /** @return the cell index (column) holding an x, or row holding a y, metres */
+    public static int cell(double m) {
+        return (int) Math.floor(m / CELL_M);
+    }
+
+    /** @return the centre of a cell column or row, metres */
+    public static double centre(int cell) {
+        return (cell + 0.5) * CELL_M;
+    }
+
+    /** @return the state of a cell (column i, row j) */
+    public byte get(int i, int j) {
+        byte[] c = chunks.get(key(Math.floorDiv(i, CHUNK_CELLS), Math.floorDiv(j, CHUNK_CELLS)));
+        return c == null ? UNKNOWN : c[Math.floorMod(j, CHUNK_CELLS) * CHUNK_CELLS + Math.floorMod(i, CHUNK_CELLS)];
+    }
+
+    /**
+     * Sets a cell; its chunk is marked changed when the state changes.
+     *
+     * @return whether the state changed
+     */
+    public boolean set(int i, int j, byte state) {
+        int cx = Math.floorDiv(i, CHUNK_CELLS);
+        int cy = Math.floorDiv(j, CHUNK_CELLS);
+        long k = key(cx, cy);
+        byte[] c = chunks.get(k);
+        if (c == null) {
+            if (state == UNKNOWN) {
+                return false;
+            }
+            c = new byte[CHUNK_CELLS * CHUNK_CELLS];
+            chunks.put(k, c);
+            extend(cx, cy);
+        }
+        int at = Math.floorMod(j, CHUNK_CELLS) * CHUNK_CELLS + Math.floorMod(i, CHUNK_CELLS);
+        if (c[at] == state) {
+            return false;
+        }
+        c[at] = state;
+        changed.add(k);
+        if (state == OCCUPIED) {
+            gainedOccupied.add(k);
+        }
+        return true;
+    }
+
+    private void extend(int cx, int cy) {
+        minCx = Math.min(minCx, cx);
+        minCy = Math.min(minCy, cy);
+        maxCx = Math.max(maxCx, cx);
+        maxCy = Math.max(maxCy, cy);
+    }
+
+    /** @return whether no chunk is stored */
+    public boolean isEmpty() {
+        return chunks.isEmpty();
+    }
+
+    /** @return the lowest column of a stored chunk's cells (undefined when empty) */
+    public int minCell(boolean x) {
+        return (x ? minCx : minCy) * CHUNK_CELLS;
+    }
+
+    /** @return one past the highest column (x) or row (y) of a stored chunk's cells (undefined when empty) */
+    public int maxCellExclusive(boolean x) {
+        return ((x ? maxCx : maxCy) + 1) * CHUNK_CELLS;
+    }
+
+    /** @return the chunks changed since they were last taken, each once, and forgets them */
+    public List<MapChunk> takeChanged() {
+        List<MapChunk> out = new ArrayList<>(changed.size());
+        for (long k : changed) {
+            out.add(new MapChunk((int) (k >> 32), (int) k, chunks.get(k).clone()));
+        }
+        changed.clear();
+        gainedOccupied.clear();
+        return out;
+    }
+
+    /**
+     * @return the changed chunks that gained an occupied cell since they were last taken, and
+     *         forgets them; chunks where only free cells changed stay to be taken later
+     */
+    public List<MapChunk> takeGainedOccupied() {
+        List<MapChunk> out = new ArrayList<>(gainedOccupied.size());
+        for (long k : gainedOccupied) {
+            out.add(new MapChunk((int) (k >> 32), (int) k, chunks.get(k).clone()));
+            changed.remove(k);
+        }
+        gainedOccupied.clear();
+        return out;
+    }
+
+    /** @return how many cells are occupied */
+    public int occupiedCells() {
+        int n = 0;
+        for (byte[] c : chunks.values()) {
+            for (byte b : c) {
+                if (b == OCCUPIED) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+}
