@@ -29,4 +29,23 @@ class SchemaUpgradeTest {
             }
         }
     }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void checkpointsMadeBeforeRoutesGetTheUnreachableColumnFalseForTheirRows(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            db.execute("DROP TABLE checkpoints");
+            db.execute("CREATE TABLE checkpoints (robot_id INT NOT NULL, seq INT NOT NULL, x_m DOUBLE NOT NULL,"
+                    + " y_m DOUBLE NOT NULL, radius_m DOUBLE NOT NULL, reached BOOLEAN NOT NULL DEFAULT FALSE,"
+                    + " reached_sim_time_ms BIGINT, PRIMARY KEY (robot_id, seq))");
+            db.execute("INSERT INTO checkpoints (robot_id, seq, x_m, y_m, radius_m) VALUES (1, 0, 1.0, 2.0, 0.25)");
+            Schema.apply(db.dataSource());
+            Schema.apply(db.dataSource());
+            try (Connection c = db.dataSource().getConnection(); Statement s = c.createStatement();
+                 ResultSet rs = s.executeQuery("SELECT unreachable FROM checkpoints WHERE robot_id = 1")) {
+                assertThat(rs.next()).isTrue();
+                assertThat(rs.getBoolean(1)).isFalse();
+            }
+        }
+    }
 }

@@ -66,6 +66,36 @@ public final class OccupancyMap {
         return (cell + 0.5) * CELL_M;
     }
 
+    /** Told of a cell, by its grid indices. */
+    @FunctionalInterface
+    public interface CellVisitor {
+        /**
+         * @param i the cell's column index
+         * @param j the cell's row index
+         */
+        void cell(int i, int j);
+    }
+
+    /**
+     * Visits every occupied cell, chunk by chunk: what a planner needs, at the cost of the known
+     * chunks rather than one lookup per cell of its grid.
+     *
+     * @param visitor told of each occupied cell
+     */
+    public void forEachOccupied(CellVisitor visitor) {
+        for (Map.Entry<Long, byte[]> e : chunks.entrySet()) {
+            long k = e.getKey();
+            int cx = (int) (k >> 32);
+            int cy = (int) k;
+            byte[] c = e.getValue();
+            for (int q = 0; q < c.length; q++) {
+                if (c[q] == OCCUPIED) {
+                    visitor.cell(cx * CHUNK_CELLS + q % CHUNK_CELLS, cy * CHUNK_CELLS + q / CHUNK_CELLS);
+                }
+            }
+        }
+    }
+
     /** @return the state of a cell (column i, row j) */
     public byte get(int i, int j) {
         byte[] c = chunks.get(key(Math.floorDiv(i, CHUNK_CELLS), Math.floorDiv(j, CHUNK_CELLS)));

@@ -138,13 +138,14 @@ final class RoutePlanner {
         int cap = (int) Math.ceil((robotRadiusM + SOFT_ZONE_M) / c) * 3 + 4;
         int[] dist = new int[n];
         Arrays.fill(dist, cap);
-        for (int b = 0; b < h; b++) {
-            for (int a = 0; a < w; a++) {
-                if (map.get(g.i0 + a, g.j0 + b) == OccupancyMap.OCCUPIED) {
-                    dist[b * w + a] = 0;
-                }
+        // the occupied cells, chunk by chunk (a lookup per grid cell was two thirds of a mission's time)
+        map.forEachOccupied((i, j) -> {
+            int a = i - g.i0;
+            int b = j - g.j0;
+            if (a >= 0 && a < w && b >= 0 && b < h) {
+                dist[b * w + a] = 0;
             }
-        }
+        });
         for (int b = 0; b < h; b++) {
             for (int a = 0; a < w; a++) {
                 int k = b * w + a;
