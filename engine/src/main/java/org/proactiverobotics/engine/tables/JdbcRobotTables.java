@@ -295,8 +295,23 @@ public final class JdbcRobotTables
         if (chunks.isEmpty()) {
             return;
         }
-        try (Connection c = dataSource.getConnection();
-             PreparedStatement delete = c.prepareStatement(
+        // on the running iteration's connection: the map commits with the iteration that drew it, or not at all
+        Connection inIteration = transaction == null ? null : transaction.connection();
+        try {
+            if (inIteration != null) {
+                writeChunks(inIteration, chunks, simTimeMs);
+            } else {
+                try (Connection c = dataSource.getConnection()) {
+                    writeChunks(c, chunks, simTimeMs);
+                }
+            }
+        } catch (SQLException e) {
+            throw new TablesException("writing " + chunks.size() + " occupancy-map chunk(s) of robot " + robotId, e);
+        }
+    }
+
+    private void writeChunks(Connection c, List<MapChunk> chunks, long simTimeMs) throws SQLException {
+        try (PreparedStatement delete = c.prepareStatement(
                      "DELETE FROM occupancy_map WHERE robot_id = ? AND chunk_x = ? AND chunk_y = ?");
              PreparedStatement insert = c.prepareStatement(
                      "INSERT INTO occupancy_map (robot_id, chunk_x, chunk_y, cells, updated_sim_time_ms) VALUES (?, ?, ?, ?, ?)")) {
@@ -314,8 +329,6 @@ public final class JdbcRobotTables
             }
             delete.executeBatch();
             insert.executeBatch();
-        } catch (SQLException e) {
-            throw new TablesException("writing " + chunks.size() + " occupancy-map chunk(s) of robot " + robotId, e);
         }
     }
 
@@ -497,11 +510,24 @@ public final class JdbcRobotTables
         }
     }
 
-    /** Runs an INSERT or UPDATE with these parameters, in order (robot_id among them where the SQL has it). */
+    /**
+     * Runs an INSERT or UPDATE with these parameters, in order (robot_id among them where the SQL has
+     * it): on the running iteration's connection, so that it commits with the iteration or not at all.
+     */
     private void update(String what, String sql, Object... params) {
-        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
-            bind(ps, 1, params);
-            ps.executeUpdate();
+        Connection inIteration = transaction == null ? null : transaction.connection();
+        try {
+            if (inIteration != null) {
+                try (PreparedStatement ps = inIteration.prepareStatement(sql)) {
+                    bind(ps, 1, params);
+                    ps.executeUpdate();
+                }
+                return;
+            }
+            try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
+                bind(ps, 1, params);
+                ps.executeUpdate();
+            }
         } catch (SQLException e) {
             throw new TablesException(what + " for robot " + robotId, e);
         }
