@@ -484,20 +484,16 @@ public final class JdbcRobotTables
     }
 
     private <T> Optional<T> queryOne(String what, String sql, RowMapper<T> mapper, Object... more) {
-        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
-            ps.setInt(1, robotId);
+        return read(what, sql, ps -> {
             bind(ps, 2, more);
             try (ResultSet rs = ps.executeQuery()) {
                 return rs.next() ? Optional.ofNullable(mapper.map(rs)) : Optional.empty();
             }
-        } catch (SQLException e) {
-            throw new TablesException("reading the " + what + " of robot " + robotId, e);
-        }
+        });
     }
 
     private <T> List<T> queryAll(String what, String sql, RowMapper<T> mapper) {
-        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
-            ps.setInt(1, robotId);
+        return read(what, sql, ps -> {
             List<T> out = new ArrayList<>();
             try (ResultSet rs = ps.executeQuery()) {
                 while (rs.next()) {
@@ -505,6 +501,32 @@ public final class JdbcRobotTables
                 }
             }
             return out;
+        });
+    }
+
+    /** A query with robot_id as its first parameter. */
+    private interface Query<T> {
+        T run(PreparedStatement ps) throws SQLException;
+    }
+
+    /**
+     * Runs a query on the running iteration's connection when one runs, so that the iteration reads
+     * its own writes (as the direct link does; the map a rule drew is the map the next rule plans on),
+     * else on a pooled connection.
+     */
+    private <T> T read(String what, String sql, Query<T> query) {
+        Connection inIteration = transaction == null ? null : transaction.connection();
+        try {
+            if (inIteration != null) {
+                try (PreparedStatement ps = inIteration.prepareStatement(sql)) {
+                    ps.setInt(1, robotId);
+                    return query.run(ps);
+                }
+            }
+            try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
+                ps.setInt(1, robotId);
+                return query.run(ps);
+            }
         } catch (SQLException e) {
             throw new TablesException("reading the " + what + " of robot " + robotId, e);
         }
