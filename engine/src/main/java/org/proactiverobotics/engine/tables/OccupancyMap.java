@@ -27,8 +27,6 @@ public final class OccupancyMap {
 
     private final Map<Long, byte[]> chunks = new HashMap<>();
     private final Set<Long> changed = new LinkedHashSet<>();
-    /** The changed chunks that gained an occupied cell. */
-    private final Set<Long> gainedOccupied = new LinkedHashSet<>();
     private int minCx = Integer.MAX_VALUE;
     private int minCy = Integer.MAX_VALUE;
     private int maxCx = Integer.MIN_VALUE;
@@ -126,9 +124,6 @@ public final class OccupancyMap {
         }
         c[at] = state;
         changed.add(k);
-        if (state == OCCUPIED) {
-            gainedOccupied.add(k);
-        }
         return true;
     }
 
@@ -161,21 +156,6 @@ public final class OccupancyMap {
             out.add(new MapChunk((int) (k >> 32), (int) k, chunks.get(k).clone()));
         }
         changed.clear();
-        gainedOccupied.clear();
-        return out;
-    }
-
-    /**
-     * @return the changed chunks that gained an occupied cell since they were last taken, and
-     *         forgets them; chunks where only free cells changed stay to be taken later
-     */
-    public List<MapChunk> takeGainedOccupied() {
-        List<MapChunk> out = new ArrayList<>(gainedOccupied.size());
-        for (long k : gainedOccupied) {
-            out.add(new MapChunk((int) (k >> 32), (int) k, chunks.get(k).clone()));
-            changed.remove(k);
-        }
-        gainedOccupied.clear();
         return out;
     }
 

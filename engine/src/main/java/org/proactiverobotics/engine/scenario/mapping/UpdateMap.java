@@ -17,24 +17,19 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * Adds each new distance scan to the map: along every ray, the cells it crossed become free and
  * the cell where it hit (a reading shorter than the range) occupied. The scan is placed at the
  * GPS and inertial-unit readings of the same moment (within {@value #SAME_MOMENT_MS} ms); a scan
- * without them is skipped. A chunk that gained an occupied cell is written at once, so the
- * obstacles of the stored map are always those the engine's last committed iteration knew (a
- * resumed engine reloads them and plans the same routes); chunks where only free cells changed
- * are written every {@value #FREE_FLUSH_SCANS} scans (a resumed engine may lack a few free marks,
- * which planners take as unknown, that is free, anyway). Clones itself every iteration.
+ * without them is skipped. Every chunk a scan changed is written in the same iteration (its
+ * transaction), so the stored map is always the one the engine's last committed iteration knew:
+ * a resumed engine reloads it and plans the same routes, step for step (writing chunks where only
+ * free cells changed later made a killed and resumed engine part from the uninterrupted run).
+ * Clones itself every iteration.
  */
 public final class UpdateMap extends Rule {
 
     /** Readings this close in simulated time are taken as one moment, ms. */
     static final long SAME_MOMENT_MS = 40;
 
-    /** Chunks where only free cells changed are written every this many scans. */
-    public static final int FREE_FLUSH_SCANS = 32;
-
     /** The simulated time of the last scan added, ms (-1: none yet). */
     private long lastScanMs = -1;
-    /** Scans added since every changed chunk was last written. */
-    private int scansSinceFlush;
 
     /** The map as stored, loaded on the first run after a start or a resume. */
     private transient OccupancyMap map;
@@ -83,10 +78,7 @@ public final class UpdateMap extends Rule {
         double radiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
         addScan(map, position.xM(), position.yM(), heading.yawRad(), radiusM, scan);
         lastScanMs = scan.simTimeMs();
-        List<MapChunk> changed = ++scansSinceFlush >= FREE_FLUSH_SCANS ? map.takeChanged() : map.takeGainedOccupied();
-        if (scansSinceFlush >= FREE_FLUSH_SCANS) {
-            scansSinceFlush = 0;
-        }
+        List<MapChunk> changed = map.takeChanged();
         if (!changed.isEmpty()) {
             table.writeChunks(changed, scan.simTimeMs());
         }
