@@ -25,8 +25,11 @@ public final class MoveToCheckpoint extends Rule {
 
     /** Counts as reached a little inside the checkpoint's radius, so the simulator agrees. */
     static final double REACHED_FRACTION = 0.8;
-    /** Re-plan the route every this many iterations. */
-    static final int REPLAN_EVERY = 16;
+    /**
+     * Re-plan the route every this many iterations: every one, because the route is not saved with
+     * the engine state (its grid is large), so a resumed engine must plan as the uninterrupted one did.
+     */
+    static final int REPLAN_EVERY = 1;
     /** Plans in a row without a route before the checkpoint is declared unreachable. */
     static final int NO_ROUTE_PLANS = 3;
     /** The farthest route point the robot steers at, metres along the route. */
