@@ -18,8 +18,8 @@ class FailSafeEndToEndTest {
 
     @Test
     void obstacleAvoidanceFailingNearAnObstacleSendsNoAvoidanceCommandStopsTheRobotAndComesBack() throws Exception {
-        double failFromS = 5.5; // avoidance is busy with the first obstacle from about 5.4 s to 8.1 s
-        double failUntilS = 6.5;
+        double failFromS = 8.0; // avoidance is busy with the first obstacle from about 7.8 s to 11.8 s
+        double failUntilS = 9.0;
         AtomicBoolean failing = new AtomicBoolean();
         FaultInjection fault = new FaultInjection(ObstacleAvoidanceScenario.class, failing::get);
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {

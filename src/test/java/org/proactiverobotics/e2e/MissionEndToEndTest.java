@@ -86,8 +86,8 @@ class MissionEndToEndTest {
 
     @Test
     void aStrategyChangedWhileRunningDecidesTheNextIterations() throws Exception {
-        double switchAtS = 6.0; // avoidance is busy with the first obstacle from about 5.4 s to 8.1 s
-        double switchBackAtS = 9.0;
+        double switchAtS = 8.2; // avoidance is busy with the first obstacle from about 7.8 s to 11.8 s
+        double switchBackAtS = 11.0;
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             JdbcRobotTables strategyFromOutside = new JdbcRobotTables(db.dataSource(), 1);
             AtomicBoolean switched = new AtomicBoolean();

@@ -35,7 +35,7 @@ final class IterationSnapshot {
             + " WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1))"
             + " UNION ALL (SELECT 5, id, 0, 0, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), sensor, '' FROM sensor_requests"
             + " WHERE robot_id = ? AND answered_sim_time_ms IS NULL)"
-            + " UNION ALL (SELECT 6, seq, CASE WHEN reached THEN 1 ELSE 0 END, 0, x_m, y_m, radius_m, CAST(0 AS DOUBLE), '', ''"
+            + " UNION ALL (SELECT 6, seq, CASE WHEN reached THEN 1 ELSE 0 END, CASE WHEN unreachable THEN 1 ELSE 0 END, x_m, y_m, radius_m, CAST(0 AS DOUBLE), '', ''"
             + " FROM checkpoints WHERE robot_id = ?)"
             + " UNION ALL (SELECT 7, 0, 0, 0, x_m, y_m, radius_m, CAST(0 AS DOUBLE), '', '' FROM recharge_station WHERE robot_id = ?)"
             + " UNION ALL (SELECT 8, 0, 0, 0, level_pct, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', '' FROM battery_recharged WHERE robot_id = ?)"
@@ -92,7 +92,7 @@ final class IterationSnapshot {
                             }
                         }
                         case 6 -> s.checkpoints.add(new Checkpoint(rs.getInt(2), rs.getDouble(5), rs.getDouble(6),
-                                rs.getDouble(7), rs.getInt(3) != 0));
+                                rs.getDouble(7), rs.getInt(3) != 0, rs.getInt(4) != 0));
                         case 7 -> s.station = new Station(rs.getDouble(5), rs.getDouble(6), rs.getDouble(7));
                         case 8 -> s.rechargeLevelPct = rs.getDouble(5);
                         case 9 -> s.strategy.add(new StrategyTable.Entry(rs.getInt(2), rs.getString(9), rs.getInt(3),
@@ -159,7 +159,13 @@ final class IterationSnapshot {
     }
 
     void reached(int seq) {
-        checkpoints.replaceAll(cp -> cp.seq() == seq ? new Checkpoint(cp.seq(), cp.xM(), cp.yM(), cp.radiusM(), true) : cp);
+        checkpoints.replaceAll(cp -> cp.seq() == seq
+                ? new Checkpoint(cp.seq(), cp.xM(), cp.yM(), cp.radiusM(), true, cp.unreachable()) : cp);
+    }
+
+    void unreachable(int seq) {
+        checkpoints.replaceAll(cp -> cp.seq() == seq
+                ? new Checkpoint(cp.seq(), cp.xM(), cp.yM(), cp.radiusM(), cp.reached(), true) : cp);
     }
 
     Optional<Station> station() {

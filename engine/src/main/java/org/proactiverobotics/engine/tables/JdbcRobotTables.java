@@ -278,6 +278,9 @@ public final class JdbcRobotTables
 
     @Override
     public void markUnreachable(int seq, long simTimeMs) {
+        if (buffering()) {
+            snapshot().unreachable(seq); // the iteration's later reads see it, as on the direct link
+        }
         update("marking checkpoint " + seq + " unreachable",
                 "UPDATE checkpoints SET unreachable = TRUE WHERE robot_id = ? AND seq = ?", robotId, seq);
     }
