@@ -2,13 +2,9 @@ package org.proactiverobotics.e2e;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import com.google.gson.JsonArray;
-import com.google.gson.JsonObject;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -154,75 +150,7 @@ class HardWorldsTest {
     }
     /** A dense cluttered world for a fast robot: gaps of 0.5 m, up to 24 obstacles, 1.0 m/s. */
     static String denseFastWorld(long seed) {
-        SplittableRandom random = new SplittableRandom(seed);
-        double[] start = {0.0, -4.0};
-        List<double[]> keepClear = new ArrayList<>();
-        keepClear.add(start);
-        double[] station = {-3.0, -2.5};
-        keepClear.add(station);
-        JsonArray checkpoints = new JsonArray();
-        while (checkpoints.size() < 3) {
-            double x = random.nextDouble(-3.3, 3.3);
-            double y = random.nextDouble(-3.3, 3.3);
-            if (Math.hypot(x, y) < 3.5 && keepClear.stream().allMatch(p -> Math.hypot(p[0] - x, p[1] - y) > 1.5)) {
-                keepClear.add(new double[] {x, y});
-                JsonObject cp = new JsonObject();
-                cp.addProperty("x", round(x));
-                cp.addProperty("y", round(y));
-                checkpoints.add(cp);
-            }
-        }
-        List<double[]> placed = new ArrayList<>(); // x, y, bounding radius
-        JsonArray obstacles = new JsonArray();
-        for (int attempt = 0; attempt < 2000 && placed.size() < 24; attempt++) {
-            double x = random.nextDouble(-3.9, 3.9);
-            double y = random.nextDouble(-3.9, 3.9);
-            double r = random.nextDouble(0.15, 0.5);
-            boolean fits = Math.hypot(x, y) + r < 4.3
-                    && keepClear.stream().allMatch(p -> Math.hypot(p[0] - x, p[1] - y) > r + 0.9)
-                    && placed.stream().allMatch(o -> Math.hypot(o[0] - x, o[1] - y) > r + o[2] + 0.5);
-            if (!fits) {
-                continue;
-            }
-            placed.add(new double[] {x, y, r});
-            JsonObject o = new JsonObject();
-            o.addProperty("x", round(x));
-            o.addProperty("y", round(y));
-            if (placed.size() % 2 == 0) {
-                o.addProperty("shape", "circle");
-                o.addProperty("radiusM", round(r * 0.95));
-            } else { // a box whose half-diagonal stays within r
-                o.addProperty("shape", "box");
-                o.addProperty("widthM", round(r * 1.4));
-                o.addProperty("heightM", round(r * 1.0));
-                o.addProperty("angleDeg", 15.0 * random.nextInt(12));
-            }
-            obstacles.add(o);
-        }
-        JsonObject world = new JsonObject();
-        world.addProperty("name", "dense-fast-" + seed);
-        world.addProperty("seed", seed);
-        world.addProperty("maxSimTimeS", 300);
-        JsonObject arena = new JsonObject();
-        arena.addProperty("radiusM", 5.0);
-        world.add("arena", arena);
-        JsonObject robot = new JsonObject();
-        robot.addProperty("x", start[0]);
-        robot.addProperty("y", start[1]);
-        robot.addProperty("headingDeg", 90.0);
-        robot.addProperty("maxSpeedMps", 1.0);
-        world.add("robot", robot);
-        world.add("obstacles", obstacles);
-        world.add("checkpoints", checkpoints);
-        JsonObject st = new JsonObject();
-        st.addProperty("x", station[0]);
-        st.addProperty("y", station[1]);
-        st.addProperty("radiusM", 0.35);
-        world.add("rechargeStation", st);
-        return world.toString();
+        return RandomWorldsTest.clutteredWorld("dense-fast-" + seed, seed, 24, 0.5, 1.0);
     }
 
-    private static double round(double v) {
-        return Math.round(v * 100) / 100.0;
-    }
 }

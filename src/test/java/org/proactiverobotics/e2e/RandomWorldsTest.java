@@ -50,6 +50,16 @@ class RandomWorldsTest {
 
     /** A reasonable world drawn from a seed, as world-file JSON. */
     static String randomWorld(long seed) {
+        return clutteredWorld("random-" + seed, seed, 16, 0.65, 0);
+    }
+
+    /**
+     * A cluttered world drawn from a seed, as world-file JSON: three checkpoints, up to
+     * {@code obstacles} boxes and circles at least {@code gapM} apart, the default arena and station.
+     *
+     * @param maxSpeedMps the robot's top speed, m/s (0: the world file's default)
+     */
+    static String clutteredWorld(String name, long seed, int maxObstacles, double gapM, double maxSpeedMps) {
         SplittableRandom random = new SplittableRandom(seed);
         double[] start = {0.0, -4.0};
         List<double[]> keepClear = new ArrayList<>();
@@ -70,13 +80,13 @@ class RandomWorldsTest {
         }
         List<double[]> placed = new ArrayList<>(); // x, y, bounding radius
         JsonArray obstacles = new JsonArray();
-        for (int attempt = 0; attempt < 2000 && placed.size() < 16; attempt++) {
+        for (int attempt = 0; attempt < 2000 && placed.size() < maxObstacles; attempt++) {
             double x = random.nextDouble(-3.9, 3.9);
             double y = random.nextDouble(-3.9, 3.9);
             double r = random.nextDouble(0.15, 0.5);
             boolean fits = Math.hypot(x, y) + r < 4.3
                     && keepClear.stream().allMatch(p -> Math.hypot(p[0] - x, p[1] - y) > r + 0.9)
-                    && placed.stream().allMatch(o -> Math.hypot(o[0] - x, o[1] - y) > r + o[2] + 0.65);
+                    && placed.stream().allMatch(o -> Math.hypot(o[0] - x, o[1] - y) > r + o[2] + gapM);
             if (!fits) {
                 continue;
             }
@@ -96,7 +106,7 @@ class RandomWorldsTest {
             obstacles.add(o);
         }
         JsonObject world = new JsonObject();
-        world.addProperty("name", "random-" + seed);
+        world.addProperty("name", name);
         world.addProperty("seed", seed);
         world.addProperty("maxSimTimeS", 300);
         JsonObject arena = new JsonObject();
@@ -106,6 +116,9 @@ class RandomWorldsTest {
         robot.addProperty("x", start[0]);
         robot.addProperty("y", start[1]);
         robot.addProperty("headingDeg", 90.0);
+        if (maxSpeedMps > 0) {
+            robot.addProperty("maxSpeedMps", maxSpeedMps);
+        }
         world.add("robot", robot);
         world.add("obstacles", obstacles);
         world.add("checkpoints", checkpoints);

@@ -9,6 +9,7 @@ import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterAll;
@@ -20,6 +21,9 @@ import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.db.Databases;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.sim2d.WorldFiles;
 import picocli.CommandLine;
 
@@ -137,6 +141,51 @@ class TwoProcessMissionTest {
         assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
         assertThat(engine.exitValue()).isZero();
         assertThat(Files.readString(engineLog)).contains("realtime timing");
+    }
+
+    /**
+     * A plug-in in the deployment: the engine process loads it (--scenarios, --strategy-file) and the
+     * two processes give the one-process run's ground truth; a third process re-ranks it by name.
+     */
+    @Test
+    void theEngineProcessRunsAPluginAsRunDoesAndAThirdProcessReranksItByName() throws Exception {
+        Path jar = PluginJars.slowpoke(tmp);
+        Path world = Files.writeString(tmp.resolve("plugin-hop.json"), PluginCommandTest.HOP);
+        Path top = Files.writeString(tmp.resolve("top.json"), "{\"name\": \"slow-first\", \"priorities\": {\"Slowpoke\": 9,"
+                + " \"ObstacleAvoidance\": 3, \"BatteryMonitor\": 2, \"ReachDestination\": 1}}");
+        Path engineLog = tmp.resolve("engine.log");
+        Path robotLog = tmp.resolve("robot.log");
+        Process engine = deployment.start("engine", Map.of("--robot-id", "5", "--scenarios", jar.toString(),
+                "--strategy-file", top.toString()), engineLog);
+        Process robot = deployment.start("robot", Map.of("--robot-id", "5", "--world", world.toString(),
+                "--out", tmp.resolve("out").toString()), robotLog);
+        assertThat(robot.waitFor(90, TimeUnit.SECONDS)).isTrue();
+        assertThat(robot.exitValue()).as(Files.readString(robotLog)).isZero();
+        JsonObject report = JsonParser.parseString(Files.readString(tmp.resolve("out/report.json"))).getAsJsonObject();
+        assertThat(report.getAsJsonObject("commandWins").get("Slowpoke").getAsLong()).isPositive();
+
+        MissionOptions options = new MissionOptions(WorldFiles.load(world), Databases.embeddedH2Url("plugin_" + System.nanoTime()),
+                "sa", "", Strategy.SAFETY_FIRST, 1).withScenarios(
+                ScenarioPlugins.load(List.of(jar), RobotEngine.builtInScenarios()), Strategy.read(top));
+        MissionReport oneProcess = new Mission(options).run(Files.createDirectories(tmp.resolve("run")));
+        TwoProcessMissionTest.assertSameGroundTruth(report, oneProcess);
+        assertThat(report.getAsJsonObject("commandWins").get("Slowpoke").getAsLong())
+                .isEqualTo(oneProcess.commandWins().get("Slowpoke"));
+
+        String shown = strategy(0, "--robot-id", "5");
+        assertThat(shown).contains("strategy slow-first").contains("Slowpoke");
+        Path bottom = Files.writeString(tmp.resolve("bottom.json"), "{\"priorities\": {\"ReachDestination\": 5, \"Slowpoke\": 1}}");
+        assertThat(strategy(0, "--robot-id", "5", "--set-file", bottom.toString())).contains("slow-first -> bottom")
+                .contains("leaves out BatteryMonitor, ObstacleAvoidance");
+        assertThat(deployment.queryLong("SELECT priority FROM strategy WHERE robot_id = 5 AND scenario = 'Slowpoke'")).isEqualTo(1);
+        assertThat(deployment.queryLong("SELECT slot FROM strategy WHERE robot_id = 5 AND scenario = 'Slowpoke'")).isEqualTo(3);
+        Path stranger = Files.writeString(tmp.resolve("stranger.json"), "{\"priorities\": {\"Stranger\": 5}}");
+        assertThat(strategy(2, "--robot-id", "5", "--set-file", stranger.toString())).contains("stranger.json")
+                .contains("'Stranger', which is not loaded").contains("Slowpoke");
+
+        engine.destroy();
+        assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        assertThat(engine.exitValue()).as(Files.readString(engineLog)).isZero();
     }
 
     private Map<String, String> robotOptions(Path world, String robotId) {

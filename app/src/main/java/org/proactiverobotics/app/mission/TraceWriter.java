@@ -9,7 +9,7 @@ import java.nio.file.Path;
 import org.proactiverobotics.app.replay.TraceStep;
 
 /**
- * Writes trace.jsonl: one JSON object per engine decision (see {@link TraceStep#line()} and
+ * Writes trace.jsonl: one JSON object per engine decision (see {@link TraceStep#write} and
  * docs/report.md).
  */
 final class TraceWriter implements AutoCloseable {

@@ -2,12 +2,8 @@ package org.proactiverobotics.app.replay;
 
 import com.google.gson.Gson;
 import com.google.gson.GsonBuilder;
-import com.google.gson.JsonObject;
-import com.google.gson.JsonParser;
 import com.google.gson.stream.JsonWriter;
 import java.io.IOException;
-import java.io.StringWriter;
-import java.io.UncheckedIOException;
 import java.util.List;
 import java.util.Map;
 
@@ -46,22 +42,6 @@ public record TraceStep(long iteration, long simTimeMs, Map<String, String> sugg
     public static final int SCHEMA_VERSION = 2;
     /** Writes an event as JsonElement.toString() would: nulls kept, no HTML escaping. */
     private static final Gson EVENTS = new GsonBuilder().serializeNulls().disableHtmlEscaping().create();
-
-    /** @return the trace.jsonl line (without the newline) */
-    public JsonObject toJson() {
-        return JsonParser.parseString(line()).getAsJsonObject();
-    }
-
-    /** @return the trace.jsonl line (without the newline), written straight, with no tree in between (the hot path) */
-    public String line() {
-        StringWriter text = new StringWriter(640);
-        try {
-            write(new JsonWriter(text));
-        } catch (IOException e) {
-            throw new UncheckedIOException(e); // a StringWriter does not fail
-        }
-        return text.toString();
-    }
 
     /**
      * Writes the line's object.
