@@ -8,6 +8,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import org.proactiverobotics.app.Plural;
+import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.app.mission.ScenarioColours;
@@ -123,9 +124,7 @@ public final class RobotProcess {
      * @throws IOException when it cannot be written
      */
     public void writeReplay(Path file, MissionReport report) throws IOException {
-        String summary = String.format(Locale.ROOT, "%s, checkpoints %d/%d, %.1f s simulated, %d collision(s), robot process",
-                report.outcome(), report.checkpointsReached(), report.checkpointsTotal(), report.simTimeS(),
-                report.collisions());
+        String summary = Mission.summary(report) + ", robot process";
         ReplayPage.write(file, ReplayPage.Source.ROBOT, options.world(),
                 ScenarioColours.of(RobotEngine.freshSlots(ScenarioPlugins.none())), replay, summary);
     }

@@ -8,10 +8,12 @@ import java.sql.PreparedStatement;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
+import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
 import org.proactiverobotics.app.replay.ReplayData;
@@ -215,9 +217,10 @@ public final class Mission {
     }
 
     /** The replay's subtitle: how the mission went, as the command line's summary says it. */
-    static String summary(MissionReport r) {
-        return String.format(java.util.Locale.ROOT, "%s, checkpoints %d/%d, %.1f s simulated, %d collision(s)%s",
-                r.outcome(), r.checkpointsReached(), r.checkpointsTotal(), r.simTimeS(), r.collisions(),
+    public static String summary(MissionReport r) {
+        return String.format(Locale.ROOT, "%s, checkpoints %d/%d, %.1f s simulated, %s%s",
+                r.outcome(), r.checkpointsReached(), r.checkpointsTotal(), r.simTimeS(),
+                Plural.of(r.collisions(), "collision"),
                 r.strategy() == null ? "" : ", strategy " + r.strategy());
     }
 

@@ -22,6 +22,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.proactiverobotics.engine.tables.StrategyTable;
 
@@ -267,11 +268,14 @@ public record Strategy(String name, Map<String, Integer> priorities, Map<String,
         return all;
     }
 
+    /** Where the JSON broke, in Gson's words without its advice and web link ("... at line 1 column 9 path $"). */
     private static String rootMessage(Throwable e) {
         Throwable t = e;
         while (t.getCause() != null) {
             t = t.getCause();
         }
-        return t.getMessage();
+        String text = String.valueOf(t.getMessage());
+        Matcher where = Pattern.compile("line \\d+ column \\d+").matcher(text);
+        return where.find() ? "malformed at " + where.group() : text.lines().findFirst().orElse(text);
     }
 }
