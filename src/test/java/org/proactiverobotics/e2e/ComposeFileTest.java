@@ -2,16 +2,20 @@ package org.proactiverobotics.e2e;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.proactiverobotics.e2e.Deployment.Compose;
+import org.yaml.snakeyaml.Yaml;
 
 /**
- * docker-compose.yml (no Docker here): its services, pinned images, health checks, named
- * volume, credentials from .env, and init scripts that are the ones the two-process tests apply.
+ * docker-compose.yml as data: its services, pinned images, the application's image built from
+ * the Dockerfile, health checks, named volume, credentials and project name from .env, and init
+ * scripts that are the ones the two-process tests apply. (.ci/compose runs it for real, with the
+ * override checked here, which swaps image names only.)
  */
 class ComposeFileTest {
 
@@ -21,11 +25,41 @@ class ComposeFileTest {
     }
 
     @Test
-    void mysqlEngineAndRobotServicesOnPinnedImages() {
+    void mysqlOnAPinnedImageAndTheProcessesOnTheApplicationsImageBuiltFromTheDockerfile() throws Exception {
         assertThat(compose.services()).containsOnlyKeys("mysql", "engine", "robot", "watch");
         assertThat(compose.service("mysql").image()).matches("mysql:8\\.4\\.\\d+");
-        assertThat(compose.service("engine").image()).isEqualTo("eclipse-temurin:17-jre");
-        assertThat(compose.service("robot").image()).isEqualTo("eclipse-temurin:17-jre");
+        for (String name : List.of("engine", "robot", "watch")) {
+            assertThat(compose.service(name).image()).as(name).isEqualTo("proactive-robotics:local");
+            assertThat(compose.service(name).get("build")).as(name).isEqualTo(Map.of("context", "."));
+        }
+        String dockerfile = Files.readString(Deployment.root().resolve("Dockerfile"));
+        // two stages, the public base images as defaults of build arguments
+        assertThat(dockerfile).contains("ARG BUILD_IMAGE=eclipse-temurin:17-jdk", "ARG RUNTIME_IMAGE=eclipse-temurin:17-jre",
+                "FROM ${BUILD_IMAGE} AS build", "FROM ${RUNTIME_IMAGE}", "COPY --from=build /proactive.jar /app/proactive.jar");
+        assertThat(Files.readAllLines(Deployment.root().resolve(".dockerignore"))).contains(".env", "**/target");
+    }
+
+    @Test
+    void theProjectNameComesFromDotEnvNotFromATopLevelNameWhichComposeV1Refuses() throws Exception {
+        assertThat(compose.topLevel()).doesNotContainKey("name");
+        assertThat(Files.readAllLines(Deployment.root().resolve(".env.example"))).contains("COMPOSE_PROJECT_NAME=proactive-robotics");
+    }
+
+    @Test
+    @SuppressWarnings("unchecked")
+    void theCiOverrideSwapsImageNamesOnly() throws Exception {
+        Map<String, Object> services;
+        try (InputStream in = Files.newInputStream(Deployment.root().resolve(".ci/compose-images/docker-compose.ci.yml"))) {
+            Map<String, Object> override = new Yaml().load(in);
+            assertThat(override).containsOnlyKeys("services");
+            services = (Map<String, Object>) override.get("services");
+        }
+        assertThat(services.get("mysql")).isEqualTo(Map.of("image", "proactive-ci/mariadb:10.11"));
+        for (String name : List.of("engine", "robot", "watch")) {
+            // the base images of the application's build, and the network that build needs on the CI's dockerd
+            assertThat(services.get(name)).as(name).isEqualTo(Map.of("build", Map.of("network", "host",
+                    "args", Map.of("BUILD_IMAGE", "proactive-ci/jdk:17", "RUNTIME_IMAGE", "proactive-ci/jre:17"))));
+        }
     }
 
     @Test
@@ -67,16 +101,22 @@ class ComposeFileTest {
     }
 
     @Test
-    void theProcessesRunTheMountedJarAsTheirLeastPrivilegeUsers() {
+    void theProcessesRunTheImagesJarAsTheirLeastPrivilegeUsers() {
         Compose.Service engine = compose.service("engine");
         Compose.Service robot = compose.service("robot");
-        assertThat(engine.volumes()).contains("./app/target/proactive.jar:/app/proactive.jar:ro");
-        assertThat(robot.volumes()).contains("./app/target/proactive.jar:/app/proactive.jar:ro", "./worlds:/app/worlds:ro");
+        for (String name : List.of("engine", "robot", "watch")) {
+            assertThat(compose.service(name).volumes()).as(name + ": the jar is the image's").noneMatch(v -> v.contains("target"));
+        }
+        assertThat(robot.volumes()).contains("./worlds:/app/worlds:ro", "./runs:/work/runs");
         assertThat(engine.command()).startsWith("java", "-jar", "/app/proactive.jar", "engine")
                 .containsSequence("--db", "jdbc:mysql://mysql:3306/proactive").containsSequence("--db-user", "proactive_engine");
         assertThat(robot.command()).startsWith("java", "-jar", "/app/proactive.jar", "robot")
                 .containsSequence("--world", "/app/worlds/reference-arena.json")
                 .containsSequence("--db", "jdbc:mysql://mysql:3306/proactive").containsSequence("--db-user", "proactive_robot");
+        // one engine per robot: ROBOT_ID (default 1) picks the pair, e.g. ROBOT_ID=2 docker compose run robot
+        for (String name : List.of("engine", "robot", "watch")) {
+            assertThat(compose.service(name).rawCommand()).as(name).containsSequence("--robot-id", "${ROBOT_ID:-1}");
+        }
     }
 
     @Test

@@ -284,6 +284,11 @@ final class Deployment implements AutoCloseable {
             }
         }
 
+        /** @return the file's top-level keys and their values */
+        Map<String, Object> topLevel() {
+            return root;
+        }
+
         @SuppressWarnings("unchecked")
         Map<String, Object> services() {
             return (Map<String, Object>) root.get("services");
@@ -327,7 +332,13 @@ final class Deployment implements AutoCloseable {
 
             @SuppressWarnings("unchecked")
             List<String> command() {
-                return ((List<Object>) map.get("command")).stream().map(o -> resolve(String.valueOf(o))).toList();
+                return rawCommand().stream().map(Compose::resolve).toList();
+            }
+
+            /** @return the command as written, ${VAR:-default} unresolved */
+            @SuppressWarnings("unchecked")
+            List<String> rawCommand() {
+                return ((List<Object>) map.get("command")).stream().map(String::valueOf).toList();
             }
 
             @SuppressWarnings("unchecked")
