@@ -18,7 +18,7 @@ class FailSafeEndToEndTest {
 
     @Test
     void obstacleAvoidanceFailingNearAnObstacleSendsNoAvoidanceCommandStopsTheRobotAndComesBack() throws Exception {
-        double failFromS = 8.0; // avoidance is busy with the first obstacle from about 7.8 s to 11.8 s
+        double failFromS = 8.0; // the collision monitor first vetoes a command at 8.256 s, before the first obstacle
         double failUntilS = 9.0;
         AtomicBoolean failing = new AtomicBoolean();
         FaultInjection fault = new FaultInjection(ObstacleAvoidanceScenario.class, failing::get);
@@ -35,10 +35,11 @@ class FailSafeEndToEndTest {
             FaultInjection.Sent firstAvoidanceAgain = sent.stream()
                     .filter(s -> s.simTimeMs() >= firstFailureMs && s.scenario().equals("ObstacleAvoidance"))
                     .findFirst().orElseThrow();
+            // (the command sent in the failure's first step was decided before it, by a healthy scenario)
             FaultInjection.Sent firstDriveAgain = sent.stream()
-                    .filter(s -> s.simTimeMs() >= firstFailureMs && !s.command().equals("STOP")).findFirst().orElseThrow();
+                    .filter(s -> s.simTimeMs() > firstFailureMs && !s.command().equals("STOP")).findFirst().orElseThrow();
             List<FaultInjection.Sent> window = sent.stream()
-                    .filter(s -> s.simTimeMs() >= firstFailureMs && s.iteration() < firstDriveAgain.iteration()).toList();
+                    .filter(s -> s.simTimeMs() > firstFailureMs && s.iteration() < firstDriveAgain.iteration()).toList();
             assertThat(firstAvoidanceAgain.simTimeMs()).as("back only once the fault is gone").isGreaterThan((long) (failUntilS * 1000));
             assertThat(firstDriveAgain.simTimeMs()).as("driving again only once the fault is gone")
                     .isGreaterThan((long) (failUntilS * 1000));

@@ -86,7 +86,7 @@ class MissionEndToEndTest {
 
     @Test
     void aStrategyChangedWhileRunningDecidesTheNextIterations() throws Exception {
-        double switchAtS = 8.2; // avoidance is busy with the first obstacle from about 7.8 s to 11.8 s
+        double switchAtS = 8.2; // under safety-first the collision monitor vetoes the destination's command at 8.256 s
         double switchBackAtS = 11.0;
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             JdbcRobotTables strategyFromOutside = new JdbcRobotTables(db.dataSource(), 1);
@@ -112,9 +112,10 @@ class MissionEndToEndTest {
                 String expected = suggestions.has("ReachDestination") ? "ReachDestination" : "DecisionMaking";
                 assertThat(t.get("winner").getAsString()).as(t.toString()).isEqualTo(expected);
             });
-            // ... even where avoidance had something to say, which safety-first obeys.
+            // ... even where avoidance had something to say (it vetoed the destination's command), which safety-first obeys.
             assertThat(during).anySatisfy(t -> assertThat(t.getAsJsonObject("suggestions").has("ObstacleAvoidance")).isTrue());
-            assertThat(before).anySatisfy(t -> assertThat(t.get("winner").getAsString()).isEqualTo("ObstacleAvoidance"));
+            assertThat(before).allSatisfy(t -> assertThat(t.getAsJsonObject("priorities").get("ObstacleAvoidance").getAsInt())
+                    .isEqualTo(3));
             List<JsonObject> after = trace.stream().filter(t -> t.get("simTimeS").getAsDouble() > switchBackAtS + 0.05).toList();
             assertThat(after).allSatisfy(t -> {
                 if (t.getAsJsonObject("suggestions").has("ObstacleAvoidance")) {

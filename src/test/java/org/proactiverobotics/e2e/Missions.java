@@ -84,6 +84,13 @@ final class Missions {
         return run(options, sim -> { }, UnaryOperator.identity());
     }
 
+    /** The run of any world over the in-process direct link, with sensor noise. */
+    static Run direct(WorldSpec world, String strategy, org.proactiverobotics.app.mission.NoiseLevel noise) {
+        MissionOptions options = new MissionOptions(world, null, null, null, strategy, 1).withLink(MissionOptions.Link.DIRECT)
+                .withNoise(noise);
+        return run(options, sim -> { }, UnaryOperator.identity());
+    }
+
     /** The run of any world on a database. */
     static Run run(WorldSpec world, TestDatabase db, String strategy) {
         MissionOptions options = new MissionOptions(world, db.jdbcUrl(), db.user(), db.password(), strategy, 1);

@@ -13,6 +13,8 @@ public final class SharedMemory {
 
     /** The default n of the CommandArray and PriorityArray. */
     public static final int DEFAULT_SLOTS = 8;
+    /** The named value that holds the command of the last decision, as "scenario command". */
+    public static final String LAST_DECISION = "lastDecision";
 
     private final CommandArray commandArray;
     private final PriorityArray priorityArray;

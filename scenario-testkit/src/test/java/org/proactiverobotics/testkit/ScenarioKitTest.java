@@ -25,8 +25,8 @@ class ScenarioKitTest {
     private static final double[] CLEAR = {FREE, FREE, FREE, FREE, FREE, FREE, FREE, FREE};
     /** An obstacle 0.3 m straight ahead. */
     private static final double[] NEAR = {FREE, FREE, FREE, 0.3, 0.3, FREE, FREE, FREE};
-    /** An obstacle 0.2 m ahead: close enough for the built-in avoidance to engage too. */
-    private static final double[] CLOSE = {FREE, FREE, 0.25, 0.2, 0.2, 0.25, FREE, FREE};
+    /** An obstacle 0.05 m ahead: within braking reach, so the built-in avoidance vetoes driving on too. */
+    private static final double[] CLOSE = {FREE, FREE, 0.1, 0.05, 0.05, 0.1, FREE, FREE};
     private static final String GOVERNOR = SpeedGovernorScenario.NAME;
 
     @ParameterizedTest

@@ -92,8 +92,13 @@ public final class DirectEngineTables
     }
 
     @Override
+    public List<MapChunk> readMapSince(long simTimeMs) {
+        return rows.readMapSince(simTimeMs);
+    }
+
+    @Override
     public void writeChunks(List<MapChunk> chunks, long simTimeMs) {
-        rows.writeChunks(chunks);
+        rows.writeChunks(chunks, simTimeMs);
     }
 
     @Override

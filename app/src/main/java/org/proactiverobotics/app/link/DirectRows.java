@@ -4,7 +4,9 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.Iterator;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.TreeMap;
 import org.proactiverobotics.engine.tables.BatteryState;
@@ -58,6 +60,8 @@ final class DirectRows {
     /** occupancy_map rows by (chunk_x, chunk_y), in the JDBC read's order. */
     private final TreeMap<List<Integer>, MapChunk> map = new TreeMap<>(
             Comparator.<List<Integer>>comparingInt(k -> k.get(0)).thenComparingInt(k -> k.get(1)));
+    /** occupancy_map's updated_sim_time_ms by (chunk_x, chunk_y). */
+    private final Map<List<Integer>, Long> mapWrittenMs = new HashMap<>();
     private long requestIds;
     private long commandIds;
 
@@ -245,9 +249,22 @@ final class DirectRows {
         return out;
     }
 
-    synchronized void writeChunks(List<MapChunk> chunks) {
+    /** The chunks written with readings of this simulated time or later, as occupancy_map's updated_sim_time_ms tells. */
+    synchronized List<MapChunk> readMapSince(long simTimeMs) {
+        List<MapChunk> out = new ArrayList<>();
+        map.forEach((k, c) -> {
+            if (mapWrittenMs.get(k) >= simTimeMs) {
+                out.add(new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
+            }
+        });
+        return out;
+    }
+
+    synchronized void writeChunks(List<MapChunk> chunks, long simTimeMs) {
         for (MapChunk c : chunks) {
-            map.put(List.of(c.chunkX(), c.chunkY()), new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
+            List<Integer> k = List.of(c.chunkX(), c.chunkY());
+            map.put(k, new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
+            mapWrittenMs.put(k, simTimeMs);
         }
     }
 

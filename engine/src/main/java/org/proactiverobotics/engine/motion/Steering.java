@@ -90,7 +90,36 @@ public final class Steering {
         return sb.append(rounded.toPlainString());
     }
 
-    /** @return the angle brought into (-π, π], radians */
+    /**
+     * @param command a command text, in the robot's grammar
+     * @return the left and right wheel speeds it asks for, metres per second (DRIVE, FORWARD,
+     *         TURN_LEFT, TURN_RIGHT; zero for STOP and RECHARGE), or null for a text that is none of these
+     */
+    public static double[] wheelSpeeds(String command) {
+        if (command == null) {
+            return null;
+        }
+        if (command.equals(STOP) || command.equals(RECHARGE)) {
+            return new double[] {0.0, 0.0};
+        }
+        String[] words = command.split(" ");
+        try {
+            return switch (words[0]) {
+                case "DRIVE" -> words.length == 3 ? new double[] {Double.parseDouble(words[1]), Double.parseDouble(words[2])} : null;
+                case "FORWARD" -> words.length == 2 ? new double[] {Double.parseDouble(words[1]), Double.parseDouble(words[1])} : null;
+                case "TURN_LEFT" -> words.length == 2 ? new double[] {-Double.parseDouble(words[1]), Double.parseDouble(words[1])} : null;
+                case "TURN_RIGHT" -> words.length == 2 ? new double[] {Double.parseDouble(words[1]), -Double.parseDouble(words[1])} : null;
+                default -> null;
+            };
+        } catch (NumberFormatException e) {
+            return null;
+        }
+    }
+
+    /**
+     * @param angleRad an angle, radians
+     * @return the same angle in (-π, π]
+     */
     public static double wrap(double angleRad) {
         double a = Math.IEEEremainder(angleRad, 2 * Math.PI);
         return a <= -Math.PI ? a + 2 * Math.PI : a;

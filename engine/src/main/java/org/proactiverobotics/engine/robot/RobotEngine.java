@@ -36,6 +36,7 @@ import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
@@ -67,14 +68,17 @@ import org.slf4j.LoggerFactory;
 public final class RobotEngine {
 
     /** The start order, for the javadoc. */
-    static final String ORDER_TEXT = "DataAcquisition, Mapping, BatteryMonitor, ReachDestination, ObstacleAvoidance,"
-            + " the plug-ins in the order given, FailSafe, DecisionMaking";
+    static final String ORDER_TEXT = "DataAcquisition, Mapping, BatteryMonitor, ReachDestination,"
+            + " the plug-ins in the order given, ObstacleAvoidance, FailSafe, DecisionMaking";
     /** Prune the engine's history every this many iterations. */
     public static final int PRUNE_EVERY = 100;
     /** Keep this many of the robot's newest commands, answered requests and rule failures. */
     public static final int KEEP_ROWS = 1000;
 
-    /** Built-in scenarios started before the plug-ins (the paper's 1 → 4 → 2 → 3, Mapping after 1), with their slots (-1: none). */
+    /**
+     * Built-in scenarios with their slots (-1: none), started in this order (the paper's 1 → 4 → 2 → 3,
+     * Mapping after 1), the plug-ins before ObstacleAvoidance: the collision monitor vets any scenario's command.
+     */
     private static final Map<String, Integer> FIRST = orderedMap(
             DataAcquisitionScenario.NAME, -1,
             MappingScenario.NAME, -1,
@@ -407,13 +411,16 @@ public final class RobotEngine {
             ScenarioRegistry registry = ScenarioRegistry.of(known);
 
             List<String> order = new ArrayList<>(FIRST.keySet());
+            order.remove(ObstacleAvoidanceScenario.NAME);
             order.addAll(plugins.scenarios().keySet());
+            order.add(ObstacleAvoidanceScenario.NAME);
             order.addAll(LAST);
             if (only != null) {
                 only.forEach(registry::get); // an unknown name fails here, naming the known ones
                 order.retainAll(only);
             }
 
+            OccupancyMapTable mapTable = mapTable(base);
             ProactiveEngine.Builder b = ProactiveEngine.builder()
                     .robotId(robotId)
                     .algorithm(algorithm)
@@ -424,7 +431,8 @@ public final class RobotEngine {
                     .service(MissionTables.class, wired.mission())
                     .service(StrategyTable.class, wired.strategy())
                     .service(EngineComments.class, wired.comments())
-                    .service(OccupancyMapTable.class, mapTable(base))
+                    .service(OccupancyMapTable.class, mapTable)
+                    .service(KnownMap.class, new KnownMap(mapTable))
                     .service(DriveProfile.class, drive);
             freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {

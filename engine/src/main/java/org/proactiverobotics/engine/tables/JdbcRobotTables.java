@@ -292,6 +292,21 @@ public final class JdbcRobotTables
                 rs -> new MapChunk(rs.getInt(1), rs.getInt(2), rs.getBytes(3)));
     }
 
+    @Override
+    public List<MapChunk> readMapSince(long simTimeMs) {
+        return read("occupancy map", "SELECT chunk_x, chunk_y, cells FROM occupancy_map"
+                + " WHERE robot_id = ? AND updated_sim_time_ms >= ? ORDER BY chunk_x, chunk_y", ps -> {
+                    ps.setLong(2, simTimeMs);
+                    List<MapChunk> out = new ArrayList<>();
+                    try (ResultSet rs = ps.executeQuery()) {
+                        while (rs.next()) {
+                            out.add(new MapChunk(rs.getInt(1), rs.getInt(2), rs.getBytes(3)));
+                        }
+                    }
+                    return out;
+                });
+    }
+
     /** Replaces each chunk's row (delete, then insert: the same two statements on every database). */
     @Override
     public void writeChunks(List<MapChunk> chunks, long simTimeMs) {

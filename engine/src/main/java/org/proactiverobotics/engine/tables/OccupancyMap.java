@@ -159,6 +159,52 @@ public final class OccupancyMap {
         return out;
     }
 
+    /**
+     * @param xM      a point's x, metres
+     * @param yM      its y, metres
+     * @param radiusM a distance, metres
+     * @return whether an occupied cell's centre lies within that distance of the point
+     */
+    public boolean occupiedWithin(double xM, double yM, double radiusM) {
+        int i0 = cell(xM - radiusM);
+        int i1 = cell(xM + radiusM);
+        int j0 = cell(yM - radiusM);
+        int j1 = cell(yM + radiusM);
+        double r2 = radiusM * radiusM;
+        long lastKey = Long.MIN_VALUE;
+        byte[] c = null;
+        for (int j = j0; j <= j1; j++) {
+            double dy = centre(j) - yM;
+            for (int i = i0; i <= i1; i++) {
+                double dx = centre(i) - xM;
+                if (dx * dx + dy * dy > r2) {
+                    continue;
+                }
+                long k = key(Math.floorDiv(i, CHUNK_CELLS), Math.floorDiv(j, CHUNK_CELLS));
+                if (k != lastKey) {
+                    c = chunks.get(k);
+                    lastKey = k;
+                }
+                if (c != null && c[Math.floorMod(j, CHUNK_CELLS) * CHUNK_CELLS + Math.floorMod(i, CHUNK_CELLS)] == OCCUPIED) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Merges stored chunks into the map, replacing those at the same place (nothing marked changed).
+     *
+     * @param rows the chunks read
+     */
+    public void putAll(List<MapChunk> rows) {
+        for (MapChunk c : rows) {
+            chunks.put(key(c.chunkX(), c.chunkY()), c.cells().clone());
+            extend(c.chunkX(), c.chunkY());
+        }
+    }
+
     /** @return how many cells are occupied */
     public int occupiedCells() {
         int n = 0;

@@ -15,6 +15,15 @@ public interface OccupancyMapTable {
     List<MapChunk> readMap();
 
     /**
+     * @param simTimeMs a simulated time, milliseconds
+     * @return at least every chunk written with readings of that time or later (all of them, unless
+     *         the table can tell)
+     */
+    default List<MapChunk> readMapSince(long simTimeMs) {
+        return readMap();
+    }
+
+    /**
      * Stores chunks, replacing the stored ones at the same place.
      *
      * @param chunks    the chunks that changed
@@ -31,6 +40,7 @@ public interface OccupancyMapTable {
     static OccupancyMapTable inMemory() {
         return new OccupancyMapTable() {
             private final Map<Long, MapChunk> chunks = new TreeMap<>();
+            private final Map<Long, Long> written = new TreeMap<>();
 
             @Override
             public synchronized List<MapChunk> readMap() {
@@ -38,9 +48,22 @@ public interface OccupancyMapTable {
             }
 
             @Override
+            public synchronized List<MapChunk> readMapSince(long simTimeMs) {
+                List<MapChunk> out = new ArrayList<>();
+                chunks.forEach((k, c) -> {
+                    if (written.get(k) >= simTimeMs) {
+                        out.add(c);
+                    }
+                });
+                return out;
+            }
+
+            @Override
             public synchronized void writeChunks(List<MapChunk> changed, long simTimeMs) {
                 for (MapChunk c : changed) {
-                    chunks.put(OccupancyMap.key(c.chunkX(), c.chunkY()), new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
+                    long k = OccupancyMap.key(c.chunkX(), c.chunkY());
+                    chunks.put(k, new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
+                    written.put(k, simTimeMs);
                 }
             }
         };

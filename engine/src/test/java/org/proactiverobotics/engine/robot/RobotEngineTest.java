@@ -15,12 +15,12 @@ import org.proactiverobotics.engine.testscenarios.Alpha;
 class RobotEngineTest {
 
     @Test
-    void pluginsStartAfterTheBuiltInsThatSuggestAndBeforeFailSafeAndTheDecision() throws Exception {
+    void pluginsStartAfterTheBuiltInsThatFindTheWayAndBeforeTheCollisionMonitorFailSafeAndTheDecision() throws Exception {
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             Schema.apply(db.dataSource());
             RobotEngine engine = RobotEngine.builder().database(db.dataSource()).plugins(ScenarioPlugins.of(new Alpha())).build();
             assertThat(engine.scenarios()).containsExactly("DataAcquisition", "Mapping", "BatteryMonitor", "ReachDestination",
-                    "ObstacleAvoidance", "Alpha", "FailSafe", "DecisionMaking");
+                    "Alpha", "ObstacleAvoidance", "FailSafe", "DecisionMaking");
             engine.startFresh();
             assertThat(engine.slots()).containsExactly(Map.entry("ReachDestination", 0), Map.entry("BatteryMonitor", 1),
                     Map.entry("ObstacleAvoidance", 2), Map.entry("Alpha", 3));

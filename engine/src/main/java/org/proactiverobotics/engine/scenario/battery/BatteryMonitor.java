@@ -4,10 +4,15 @@ import java.util.List;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.Route;
+import org.proactiverobotics.engine.navigation.RoutePlanner;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.Station;
 
@@ -17,9 +22,11 @@ import org.proactiverobotics.engine.tables.Station;
  * fails it generates MoveToRecharge.
  * <ul>
  * <li><b>Point of no return</b>, always, whether or not the robot makes progress (lost, circling,
- * stuck on a wall): is there enough left to drive back to the station? The way back is the
- * straight line stretched by the detour factor (1.4 until a trip to the station has measured a
- * longer one, see {@link DrainEstimate#detour()}), plus a reserve.</li>
+ * stuck on a wall): is there enough left to drive back to the station? The way back is the route
+ * planned on the map known so far ({@link RoutePlanner}; between plans, the last plan plus what
+ * has been driven since, which the robot could drive back), stretched by the detour factor (1.25
+ * until a trip to the station has measured a longer one, see {@link DrainEstimate#detour()}),
+ * plus a reserve.</li>
  * <li><b>The leg</b>: can the robot reach its next checkpoint and still get to the station from
  * there (for the last checkpoint: just reach it)? Checked only when a full charge could promise
  * the leg from the station (a recharge then helps), and not on the first leg after a recharge:
@@ -33,12 +40,22 @@ public final class BatteryMonitor extends Rule {
 
     /** Battery always kept back, percent. */
     static final double RESERVE_PCT = 5.0;
+    /** Plan the way back again after driving this far, metres. */
+    static final double REPLAN_AFTER_M = 0.5;
+    /** ... and at least this often, iterations. */
+    static final int REPLAN_EVERY = 32;
 
     private DrainEstimate drain = new DrainEstimate();
     /** Just handed back by a recharge: the next leg is taken whatever it asks. */
     private boolean charged;
     /** The checkpoint the robot set out for after the last recharge (-1: none). */
     private int committedSeq = -1;
+    /** The way back to the station planned last, metres (-1: none yet). */
+    private double wayBackM = -1;
+    /** Driven since the way back was planned, metres. */
+    private double drivenSincePlanM;
+    /** Iterations since the way back was planned. */
+    private int sincePlan;
 
     private transient GpsFix position;
     private transient BatteryState battery;
@@ -82,7 +99,28 @@ public final class BatteryMonitor extends Rule {
         }
         drain.position(position.xM(), position.yM());
         drain.battery(battery.simTimeMs(), battery.levelPct(), battery.charging());
+        drivenSincePlanM += drain.lastStepM();
+        sincePlan++;
         return true;
+    }
+
+    /**
+     * The way back to the station, metres: planned again every {@value #REPLAN_AFTER_M} m driven
+     * and every {@value #REPLAN_EVERY} iterations (walls seen since may lengthen it), else the last
+     * plan plus the distance driven since; the straight line when no route is known.
+     */
+    private double wayBackM(RuleContext ctx) {
+        double straightM = position.distanceTo(station.xM(), station.yM());
+        if (wayBackM < 0 || drivenSincePlanM > REPLAN_AFTER_M || sincePlan >= REPLAN_EVERY) {
+            OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
+            double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
+            Route route = RoutePlanner.plan(map, position.xM(), position.yM(), station.xM(), station.yM(),
+                    station.radiusM() * MoveToRecharge.AT_STATION_FRACTION * 0.9, robotRadiusM);
+            wayBackM = route == null ? straightM : route.lengthM();
+            drivenSincePlanM = 0;
+            sincePlan = 0;
+        }
+        return Math.max(straightM, wayBackM + drivenSincePlanM);
     }
 
     /**
@@ -108,7 +146,7 @@ public final class BatteryMonitor extends Rule {
         }
         double perMetre = drain.pctPerMetre();
         double detour = drain.detour();
-        double backPct = perMetre * detour * position.distanceTo(station.xM(), station.yM()) + RESERVE_PCT;
+        double backPct = perMetre * detour * wayBackM(ctx) + RESERVE_PCT;
         boolean last = next.seq() == checkpoints.get(checkpoints.size() - 1).seq();
         if (last && battery.levelPct() >= perMetre * detour * position.distanceTo(next.xM(), next.yM()) + RESERVE_PCT
                 && position.distanceTo(next.xM(), next.yM()) <= position.distanceTo(station.xM(), station.yM())) {

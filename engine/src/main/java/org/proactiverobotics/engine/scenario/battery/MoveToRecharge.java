@@ -3,26 +3,29 @@ package org.proactiverobotics.engine.scenario.battery;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
-import org.proactiverobotics.engine.motion.BoundaryFollower;
 import org.proactiverobotics.engine.motion.Clearance;
+import org.proactiverobotics.engine.motion.CollisionReflex;
 import org.proactiverobotics.engine.motion.ControlPeriod;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
  * Drives to the recharge station, asks for RECHARGE there until the battery is back at the
  * battery_recharged level, then generates a new BatteryMonitor (which keeps what was learnt).
- * Steers like MoveToCheckpoint, as in the paper, and gets round obstacles on its own with the
- * shared boundary-following reflex ({@link BoundaryFollower}, with the clearance derived from the
- * robot's speed and body), so that a recharge never depends on another scenario letting go of a
- * wall: the strategies rank this scenario's suggestions above obstacle avoidance's. It measures
- * how much longer than the straight line the way to the station was ({@link DrainEstimate#trip}).
+ * Steers like MoveToCheckpoint, as in the paper: along a route planned on the map known so far
+ * ({@link RouteFollower}, re-planned as walls appear), with the shared collision reflex
+ * ({@link CollisionReflex}, its distances derived from the robot's speed and body) beneath, so that
+ * a recharge is safe under any strategy, even one that ranks it above obstacle avoidance. It measures how much
+ * longer than the planned way the way driven to the station was ({@link DrainEstimate#trip}).
  */
 public final class MoveToRecharge extends Rule {
 
@@ -32,21 +35,17 @@ public final class MoveToRecharge extends Rule {
     static final double FULL_TOLERANCE_PCT = 0.5;
     /** A scan this far behind the heading is stale: driving blind, milliseconds. */
     static final long STALE_SCAN_MS = 500;
-    /** Half the sector checked toward the station, radians. */
-    private static final double SECTOR_RAD = Math.toRadians(25);
-    /** The flanks reach this far from the heading, radians. */
-    private static final double SIDE_RAD = Math.toRadians(100);
-    /** Beyond this bearing the station is behind the rays, radians. */
-    private static final double SEEN_BEARING_RAD = Math.toRadians(80);
 
     private double xM;
     private double yM;
     private double radiusM;
     private DrainEstimate drain;
-    private BoundaryFollower follower = new BoundaryFollower();
+    private CollisionReflex reflex = new CollisionReflex();
     private ControlPeriod period = new ControlPeriod();
-    /** Straight-line distance to the station when the trip began, metres (-1: not yet known). */
-    private double tripStraightM = -1;
+    /** The route to the station and its re-planning. */
+    private RouteFollower route = new RouteFollower();
+    /** The planned way to the station when the trip began, metres (-1: not yet known). */
+    private double tripPlannedM = -1;
     /** Distance driven on the trip so far, metres. */
     private double tripDrivenM;
     private boolean arrived;
@@ -57,6 +56,8 @@ public final class MoveToRecharge extends Rule {
     private transient DistanceScan scan;
     private transient double targetPct;
     private transient boolean done;
+    private transient double aimX;
+    private transient double aimY;
 
     private MoveToRecharge() {
     }
@@ -94,9 +95,7 @@ public final class MoveToRecharge extends Rule {
     protected boolean conditions(RuleContext ctx) {
         drain.position(position.xM(), position.yM());
         drain.battery(battery.simTimeMs(), battery.levelPct(), battery.charging());
-        if (tripStraightM < 0) {
-            tripStraightM = position.distanceTo(xM, yM);
-        } else if (!arrived) {
+        if (tripPlannedM >= 0 && !arrived) {
             tripDrivenM += drain.lastStepM();
         }
         done = battery.levelPct() >= targetPct - FULL_TOLERANCE_PCT;
@@ -108,49 +107,34 @@ public final class MoveToRecharge extends Rule {
         if (position.distanceTo(xM, yM) < radiusM * AT_STATION_FRACTION) {
             if (!arrived) {
                 arrived = true;
-                drain.trip(tripDrivenM, tripStraightM);
+                drain.trip(tripDrivenM, tripPlannedM);
             }
             ctx.suggest(Steering.RECHARGE);
             return;
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
-        String command = null;
+        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
+        aimX = xM;
+        aimY = yM;
+        if (route.step(map, position.xM(), position.yM(), xM, yM, radiusM * AT_STATION_FRACTION * 0.9,
+                profile.axleWidthM() / 2) == RouteFollower.Status.TARGET) {
+            aimX = route.targetX(); // no route on the map known so far: straight at the station, the reflex beneath
+            aimY = route.targetY();
+        }
+        if (tripPlannedM < 0) {
+            tripPlannedM = route.remainingM(position.xM(), position.yM(), xM, yM);
+        }
+        String command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), aimX, aimY, profile);
         if (scan != null) {
             if (Math.abs(heading.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
                 command = Steering.STOP; // the distance readings lag: never drive blind
             } else {
-                Clearance clearance = Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM());
-                if (wayToStationClear(clearance)) {
-                    follower.release(); // head for the station: no wall to follow away from it
-                } else {
-                    command = follower.decide(scan, heading.yawRad(), profile, clearance);
-                }
+                String veto = reflex.vet(command, scan, map, position.xM(), position.yM(), heading.yawRad(), profile,
+                        Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM()));
+                command = veto == null ? command : veto;
             }
         }
-        if (command == null) {
-            command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), xM, yM, profile);
-        }
         ctx.suggest(command);
-    }
-
-    /**
-     * Whether the robot may head straight for the station: nothing is about to be hit ahead or
-     * graze a flank, and the rays toward the station (±25°) are clear for the release distance, or (before any
-     * boundary is followed) the station is behind, where turning on the spot toward it is safe.
-     */
-    private boolean wayToStationClear(Clearance clearance) {
-        double front = scan.min(-SECTOR_RAD, SECTOR_RAD);
-        if (front < clearance.engageFrontM() && follower.following()) {
-            return false;
-        }
-        double bearing = Steering.wrap(Math.atan2(yM - position.yM(), xM - position.xM()) - heading.yawRad());
-        if (Math.abs(bearing) > SEEN_BEARING_RAD) {
-            return !follower.following() && front >= clearance.imminentM();
-        }
-        double towardStation = scan.min(bearing - SECTOR_RAD, bearing + SECTOR_RAD);
-        double needed = Math.min(clearance.releaseFrontM(), Math.max(clearance.engageAheadM(), position.distanceTo(xM, yM)));
-        double sides = Math.min(scan.min(-SIDE_RAD, -SECTOR_RAD), scan.min(SECTOR_RAD, SIDE_RAD));
-        return towardStation > needed && front >= clearance.engageFrontM() && sides >= clearance.engageSideM();
     }
 
     @Override

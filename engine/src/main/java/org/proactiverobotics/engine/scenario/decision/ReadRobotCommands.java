@@ -7,6 +7,7 @@ import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.PriorityArray;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.SharedMemory;
 import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
@@ -113,6 +114,7 @@ public final class ReadRobotCommands extends Rule {
             }
         }
         ctx.findService(DecisionObserver.class).ifPresent(o -> o.decided(ctx.iteration(), commands, winner));
+        ctx.memory().values().put(SharedMemory.LAST_DECISION, winner.scenario() + " " + winner.command());
         for (int slot = 0; slot < commands.size(); slot++) {
             if (timeoutMs(slot) == 0) {
                 commands.clear(slot);

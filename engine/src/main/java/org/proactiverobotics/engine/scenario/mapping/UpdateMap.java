@@ -15,7 +15,7 @@ import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
  * Adds each new distance scan to the map: along every ray, the cells it crossed become free and
- * the cell where it hit (a reading shorter than the range) occupied. The scan is placed at the
+ * the cell where it hit (a reading shorter than {@value #FREE_MARGIN} of the range below it) occupied. The scan is placed at the
  * GPS and inertial-unit readings of the same moment (within {@value #SAME_MOMENT_MS} ms); a scan
  * without them is skipped. Every chunk a scan changed is written in the same iteration (its
  * transaction), so the stored map is always the one the engine's last committed iteration knew:
@@ -25,6 +25,12 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  */
 public final class UpdateMap extends Rule {
 
+    /**
+     * A reading within this share of the range is taken as a ray that hit nothing: a free ray reads
+     * a little under its range when the sensor is noisy, and marking that as a wall drew a ring of
+     * walls round the robot (every checkpoint unreachable within two seconds under --noise small).
+     */
+    static final double FREE_MARGIN = 0.1;
     /** Readings this close in simulated time are taken as one moment, ms. */
     static final long SAME_MOMENT_MS = 40;
 
@@ -105,7 +111,7 @@ public final class UpdateMap extends Rule {
             if (!(d >= 0) || !Double.isFinite(d)) {
                 continue; // a reading that is not a number marks nothing
             }
-            boolean hit = d < scan.rangeM() - 1e-6;
+            boolean hit = d < scan.rangeM() * (1 - FREE_MARGIN);
             double a = yawRad + scan.anglesRad()[k];
             double reach = radiusM + Math.min(d, scan.rangeM());
             double ex = xM + Math.cos(a) * reach;

@@ -1,4 +1,4 @@
-package org.proactiverobotics.engine.scenario.destination;
+package org.proactiverobotics.engine.navigation;
 
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -11,9 +11,11 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * blocked, and cells up to {@value #SOFT_ZONE_M} m beyond cost more, so routes keep off walls
  * where they can. The search covers the known map, the robot and the goal, with
  * {@value #MARGIN_M} m around. Cells within {@value #START_CLEAR_M} m of the start are blocked only
- * when occupied (the robot is already there).
+ * where the body would be tighter than it is at the start (the robot may already be close to a wall). The cell chain found is shortened to the waypoints
+ * a straight drive can join (each leg keeps {@value #SIGHT_MARGIN_M} m more than the robot's radius
+ * from occupied cells), so a route is a few points, small enough to save with the rule that follows it.
  */
-final class RoutePlanner {
+public final class RoutePlanner {
 
     /** Cells up to this far beyond the blocked band cost more, metres. */
     static final double SOFT_ZONE_M = 0.2;
@@ -22,12 +24,17 @@ final class RoutePlanner {
     /** Room searched beyond the known map, the robot and the goal, metres. */
     static final double MARGIN_M = 1.0;
     /** A straight drive to a route point keeps this much more than the robot's radius from occupied cells, metres. */
-    static final double SIGHT_MARGIN_M = 0.06;
-    /** Cells this close to the start are blocked only when occupied, metres. */
-    static final double START_CLEAR_M = 0.25;
+    public static final double SIGHT_MARGIN_M = 0.06;
+    /**
+     * A cell is blocked closer than the robot's radius plus this to an occupied cell's centre, metres:
+     * the room the collision reflex keeps ({@code motion.CollisionReflex#SIDE_MARGIN_M}), so that it never vetoes a route.
+     */
+    public static final double BODY_MARGIN_M = 0.02;
+    /** Cells this close to the start are blocked only where the body would be tighter than at the start, metres. */
+    public static final double START_CLEAR_M = 0.25;
 
-    /** The blocked cells of one plan's area, for line-of-sight checks between plans. */
-    static final class Grid {
+    /** The blocked cells of one plan's area. */
+    private static final class Grid {
         final int i0;
         final int j0;
         final int w;
@@ -79,25 +86,6 @@ final class RoutePlanner {
         }
     }
 
-    /**
-     * A planned route.
-     *
-     * @param xs   the route's points' x, metres, from the start to the goal
-     * @param ys   their y, metres
-     * @param grid the blocked cells it was planned on
-     */
-    record Route(double[] xs, double[] ys, Grid grid) {
-
-        /** @return the route's length, metres */
-        double lengthM() {
-            double sum = 0;
-            for (int k = 1; k < xs.length; k++) {
-                sum += Math.hypot(xs[k] - xs[k - 1], ys[k] - ys[k - 1]);
-            }
-            return sum;
-        }
-    }
-
     private RoutePlanner() {
     }
 
@@ -111,7 +99,7 @@ final class RoutePlanner {
      * @param robotRadiusM  the robot's radius, metres
      * @return the route, or null when none exists even with every unknown cell free
      */
-    static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM) {
+    public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM) {
         double c = OccupancyMap.CELL_M;
         int margin = (int) Math.ceil(MARGIN_M / c);
         int si = OccupancyMap.cell(sx);
@@ -135,7 +123,7 @@ final class RoutePlanner {
         int n = w * h;
 
         // Chamfer distance (3-4, in thirds of a cell) to the nearest occupied cell, capped.
-        int cap = (int) Math.ceil((robotRadiusM + SOFT_ZONE_M) / c) * 3 + 4;
+        int cap = (int) Math.ceil((robotRadiusM + BODY_MARGIN_M + SOFT_ZONE_M) / c) * 3 + 4;
         int[] dist = new int[n];
         Arrays.fill(dist, cap);
         // the occupied cells, chunk by chunk (a lookup per grid cell was two thirds of a mission's time)
@@ -173,6 +161,10 @@ final class RoutePlanner {
             }
         }
         double clear2 = START_CLEAR_M * START_CLEAR_M;
+        int startCell = (sj - g.j0) * w + (si - g.i0);
+        // near the start a cell is blocked only where the body would be tighter than it is already
+        double bodyM = robotRadiusM + BODY_MARGIN_M;
+        double startBlockM = Math.min(bodyM, dist[startCell] / 3.0 * c - OccupancyMap.CELL_M / 2);
         for (int b = 0; b < h; b++) {
             for (int a = 0; a < w; a++) {
                 int k = b * w + a;
@@ -180,11 +172,12 @@ final class RoutePlanner {
                 g.clearance[k] = (float) dm;
                 double ox = OccupancyMap.centre(g.i0 + a) - sx;
                 double oy = OccupancyMap.centre(g.j0 + b) - sy;
-                if (dist[k] == 0 || (dm < robotRadiusM && ox * ox + oy * oy > clear2)) {
+                boolean nearStart = ox * ox + oy * oy <= clear2;
+                if (dist[k] == 0 || dm < (nearStart ? startBlockM : bodyM)) {
                     g.blocked[k] = true; // occupied cells stay blocked even next to the start
                     g.occupied[k] = dist[k] == 0;
-                } else if (dm < robotRadiusM + SOFT_ZONE_M) {
-                    g.extra[k] = (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - robotRadiusM) / SOFT_ZONE_M));
+                } else if (dm < bodyM + SOFT_ZONE_M) {
+                    g.extra[k] = (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M));
                 }
             }
         }
@@ -267,7 +260,32 @@ final class RoutePlanner {
         }
         xs[m] = gx;
         ys[m] = gy;
-        return new Route(xs, ys, g);
+        return shorten(g, xs, ys);
+    }
+
+    /** Keeps only the points a straight drive must pass through: from each kept point, the last one of the chain still in sight. */
+    private static Route shorten(Grid g, double[] xs, double[] ys) {
+        int n = xs.length;
+        int[] kept = new int[n];
+        int count = 0;
+        kept[count++] = 0;
+        int at = 0;
+        while (at < n - 1) {
+            int next = at + 1;
+            double clearM = at == 0 ? START_CLEAR_M : 0.0;
+            while (next + 1 < n && g.visible(xs[at], ys[at], xs[next + 1], ys[next + 1], clearM)) {
+                next++;
+            }
+            kept[count++] = next;
+            at = next;
+        }
+        double[] rx = new double[count];
+        double[] ry = new double[count];
+        for (int q = 0; q < count; q++) {
+            rx[q] = xs[kept[q]];
+            ry[q] = ys[kept[q]];
+        }
+        return new Route(rx, ry);
     }
 
     private static int heuristic(int i, int j, int gi, int gj, int reachTenths) {

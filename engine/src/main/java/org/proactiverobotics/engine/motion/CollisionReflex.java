@@ -1,0 +1,287 @@
+package org.proactiverobotics.engine.motion;
+
+import java.util.Arrays;
+import org.proactiverobotics.engine.tables.DistanceScan;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+
+/**
+ * The collision reflex any scenario may hold, as a robot's collision monitor does: it vets the
+ * command the robot is about to drive and speaks only when that command would bring the body
+ * into something within its braking reach; otherwise it lets the command go, so the scenarios
+ * that find the way (which plan on the map) drive everywhere, doorways and narrow corridors
+ * included. The body is a disc, so turning on the spot sweeps nothing new: a vetoed command is
+ * replaced by a turn on the spot in the direction it wanted to turn (toward the freer side when it
+ * wanted none, kept until the way is clear, so the robot does not dither between two sides).
+ * The reach is the distance covered at the command's speed while a reading is answered, decided
+ * and acted on, plus the time to stop ({@link Clearance#imminentM()}, from the robot's speed,
+ * control period and sensor range), plus {@value #SIDE_MARGIN_M} m.
+ *
+ * <p>The command's arc is checked against the points the rays hit now and in the last
+ * {@value #MEMORY_MS} ms, placed by the GPS and inertial-unit readings (a short memory, as a
+ * robot's local costmap keeps): eight rays leave gaps at the flanks, and a pillar or a wall's
+ * corner seen a moment ago is still there when it slips between two rays. Plain fields, so it is
+ * saved with the rule that holds it.
+ */
+public final class CollisionReflex {
+
+    /** Hits are remembered this long, milliseconds. */
+    static final long MEMORY_MS = 3000;
+    /** At most this many remembered hits (the oldest go first). */
+    static final int MEMORY_POINTS = 64;
+    /** A hit this close to a remembered one adds nothing, metres. */
+    static final double MEMORY_SPACING_M = 0.04;
+    /** Room kept between the body and a hit, metres (readings jitter by about a centimetre). */
+    public static final double SIDE_MARGIN_M = 0.02;
+    /** The arc is checked every this many metres. */
+    private static final double ARC_STEP_M = 0.01;
+    /** Vetoes in a row after which the robot backs off a little. */
+    static final int STUCK_VETOES = 40;
+    /** Iterations it then backs off for. */
+    static final int BACK_ITERATIONS = 12;
+    /** Backing-off speed, as a share of the top speed. */
+    static final double BACK_SPEED = 0.3;
+    /** Backing off checks this far behind, metres. */
+    static final double BACK_REACH_M = 0.1;
+    /** A flank reading this close, metres from the rim, guards that side (8 rays cannot see the wall between). */
+    static final double FLANK_GUARD_M = 0.06;
+    /** Turning toward a guarded flank faster than this is vetoed, radians per second. */
+    static final double FLANK_TURN_RAD_S = 0.2;
+    /** Turn rate of a turn on the spot, radians per second. */
+    private static final double TURN_RAD_S = 1.8;
+    private static final double DEG = Math.PI / 180;
+
+    /** The side of the last turn on the spot, +1 left, -1 right, 0 none: kept while the way is blocked. */
+    private int turning;
+    /** The last scan's nearest reading at each flank (left, right), metres from the rim. */
+    private double[] lastFlankM = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+    /** Vetoes since a forward command last went through. */
+    private int vetoes;
+    /** Iterations of backing off still to go. */
+    private int backing;
+    /** Remembered hits: x, y (metres) and simulated time (ms) of each, oldest first. */
+    private double[] hitX = new double[0];
+    private double[] hitY = new double[0];
+    private long[] hitMs = new long[0];
+
+    /** @return whether the reflex vetoed the last command it vetted */
+    public boolean engaged() {
+        return turning != 0;
+    }
+
+    /**
+     * Vets a command.
+     *
+     * @param intended the command the robot would drive (null: none, the robot stops; a text not in the
+     *                 robot's grammar is vetted as full speed ahead)
+     * @param s        the newest distance scan
+     * @param xM       the robot's x at the scan, metres
+     * @param yM       its y, metres
+     * @param yawRad   its heading, radians
+     * @param profile  the robot's drive (its body's radius is half the axle width)
+     * @param c        the distances to keep
+     * @return a turn on the spot when the command would bring the body into a hit within its reach, else null
+     */
+    public String vet(String intended, DistanceScan s, double xM, double yM, double yawRad, DriveProfile profile, Clearance c) {
+        return vet(intended, s, null, xM, yM, yawRad, profile, c);
+    }
+
+    /**
+     * Vets a command against the hits and the occupied cells of the map known so far: the map
+     * remembers a wall's end or a corner the rays saw on the way in, wherever they point now.
+     *
+     * @param intended the command the robot would drive (as {@link #vet(String, DistanceScan, double, double, double, DriveProfile, Clearance)})
+     * @param s        the newest distance scan
+     * @param map      the map known so far (null: the hits alone)
+     * @param xM       the robot's x at the scan, metres
+     * @param yM       its y, metres
+     * @param yawRad   its heading, radians
+     * @param profile  the robot's drive
+     * @param c        the distances to keep
+     * @return a turn on the spot when the command would bring the body into a hit or an occupied cell within its reach, else null
+     */
+    public String vet(String intended, DistanceScan s, OccupancyMap map, double xM, double yM, double yawRad,
+                      DriveProfile profile, Clearance c) {
+        double radiusM = profile.axleWidthM() / 2;
+        remember(s, xM, yM, yawRad, radiusM);
+        double backSpeed = -BACK_SPEED * profile.maxSpeedMps();
+        if (backing > 0) {
+            backing--;
+            if (!hitsWithin(map, xM, yM, yawRad, radiusM, backSpeed, 0.0, BACK_REACH_M)) {
+                return Steering.drive(backSpeed, 0.0, profile);
+            }
+            backing = 0; // something behind too: turn instead
+        }
+        if (intended == null) {
+            turning = 0;
+            vetoes = 0;
+            return null;
+        }
+        double[] wheels = Steering.wheelSpeeds(intended);
+        if (wheels == null) {
+            wheels = new double[] {profile.maxSpeedMps(), profile.maxSpeedMps()}; // unknown: assume the worst
+        }
+        double speed = (wheels[0] + wheels[1]) / 2;
+        double turnRate = (wheels[1] - wheels[0]) / profile.axleWidthM();
+        if (speed <= 1e-6) {
+            return null; // turning on the spot or backing off: the rays look ahead only
+        }
+        double reachM = c.imminentM() * Math.min(1.0, speed / profile.maxSpeedMps()) + SIDE_MARGIN_M;
+        int guarded = flankGuard(s, turnRate);
+        if (guarded != 0) {
+            turning = -guarded; // away from the flank it would close on
+        }
+        if (guarded == 0 && !hitsWithin(map, xM, yM, yawRad, radiusM, speed, turnRate, reachM)) {
+            turning = 0;
+            vetoes = 0;
+            return null;
+        }
+        if (++vetoes >= STUCK_VETOES) {
+            vetoes = 0; // the way it wants stays blocked however it turns: back off a little, then let it try again
+            backing = BACK_ITERATIONS;
+            if (!hitsWithin(map, xM, yM, yawRad, radiusM, backSpeed, 0.0, BACK_REACH_M)) {
+                backing--;
+                return Steering.drive(backSpeed, 0.0, profile);
+            }
+            backing = 0;
+        }
+        if (guarded != 0) {
+            // turning stays away from the guarded flank
+        } else if (Math.abs(turnRate) > 0.05) {
+            turning = turnRate > 0 ? +1 : -1; // the way the command was turning
+        } else if (turning == 0) {
+            turning = s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
+        }
+        return Steering.drive(0.0, turning * TURN_RAD_S, profile);
+    }
+
+    /** Whether the body, driven along the command's arc for {@code reachM}, comes closer than the margin to a hit. */
+    private boolean hitsWithin(OccupancyMap map, double xM, double yM, double yawRad, double radiusM,
+                               double speed, double turnRate, double reachM) {
+        double keep = radiusM + SIDE_MARGIN_M;
+        double keep2 = keep * keep;
+        int steps = (int) Math.ceil(reachM / ARC_STEP_M);
+        double dir = Math.signum(speed);
+        double perStepRad = turnRate / Math.abs(speed) * ARC_STEP_M;
+        double px = xM;
+        double py = yM;
+        double heading = yawRad;
+        for (int q = 1; q <= steps; q++) {
+            heading += perStepRad;
+            px += dir * ARC_STEP_M * Math.cos(heading);
+            py += dir * ARC_STEP_M * Math.sin(heading);
+            for (int k = 0; k < hitX.length; k++) {
+                double dx = hitX[k] - px;
+                double dy = hitY[k] - py;
+                double d2 = dx * dx + dy * dy;
+                if (d2 < keep2) {
+                    // only when the motion brings the body closer: a hit it is already beside or leaving is no veto
+                    double ax = hitX[k] - xM;
+                    double ay = hitY[k] - yM;
+                    if (d2 < ax * ax + ay * ay - 1e-6) {
+                        return true;
+                    }
+                }
+            }
+            if (map != null && occupiedCloser(map, xM, yM, px, py, keep)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Whether an occupied cell's centre lies within {@code keepM} of (px, py) and closer to it than to (x0, y0). */
+    private static boolean occupiedCloser(OccupancyMap map, double x0, double y0, double px, double py, double keepM) {
+        int i0 = OccupancyMap.cell(px - keepM);
+        int i1 = OccupancyMap.cell(px + keepM);
+        int j0 = OccupancyMap.cell(py - keepM);
+        int j1 = OccupancyMap.cell(py + keepM);
+        double keep2 = keepM * keepM;
+        for (int j = j0; j <= j1; j++) {
+            double cy = OccupancyMap.centre(j);
+            for (int i = i0; i <= i1; i++) {
+                double cx = OccupancyMap.centre(i);
+                double d2 = (cx - px) * (cx - px) + (cy - py) * (cy - py);
+                if (d2 < keep2 && d2 < (cx - x0) * (cx - x0) + (cy - y0) * (cy - y0) - 1e-6
+                        && map.get(i, j) == OccupancyMap.OCCUPIED) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The flank (+1 left, -1 right, 0 none) that a forward command would close on: one whose nearest
+     * reading (60° to 120°) is within {@value #FLANK_GUARD_M} m of the rim and either shrank since
+     * the last scan (the wall there converges) or lies on the side the command turns to. Between the
+     * 45° and 90° rays a wall's continuation or a box's corner is not seen, and it is what a body
+     * sliding along it hits. Remembers this scan's flank readings.
+     */
+    private int flankGuard(DistanceScan s, double turnRate) {
+        double left = s.min(60 * DEG, 120 * DEG);
+        double right = s.min(-120 * DEG, -60 * DEG);
+        int guarded = 0;
+        if (left < FLANK_GUARD_M && (closing(left, lastFlankM[0]) || turnRate > FLANK_TURN_RAD_S)) {
+            guarded = +1;
+        } else if (right < FLANK_GUARD_M && (closing(right, lastFlankM[1]) || turnRate < -FLANK_TURN_RAD_S)) {
+            guarded = -1;
+        }
+        lastFlankM[0] = left;
+        lastFlankM[1] = right;
+        return guarded;
+    }
+
+    /** Whether a flank reading shrank since the last scan, which saw that wall too (not one just come into the ray). */
+    private static boolean closing(double nowM, double lastM) {
+        return lastM < 2 * FLANK_GUARD_M && nowM < lastM - 0.002;
+    }
+
+    /** Forgets every remembered hit (the robot's position is unknown, so they cannot be placed). */
+    public void forget() {
+        hitX = new double[0];
+        hitY = new double[0];
+        hitMs = new long[0];
+    }
+
+    /** Adds the scan's hits to the memory and forgets the old and the far. */
+    private void remember(DistanceScan s, double xM, double yM, double yawRad, double radiusM) {
+        int n = hitX.length;
+        double[] xs = new double[n + s.anglesRad().length];
+        double[] ys = new double[xs.length];
+        long[] ms = new long[xs.length];
+        int m = 0;
+        double farM = radiusM + s.rangeM() + 0.5;
+        for (int k = 0; k < n; k++) {
+            if (s.simTimeMs() - hitMs[k] <= MEMORY_MS && Math.hypot(hitX[k] - xM, hitY[k] - yM) <= farM) {
+                xs[m] = hitX[k];
+                ys[m] = hitY[k];
+                ms[m++] = hitMs[k];
+            }
+        }
+        for (int k = 0; k < s.anglesRad().length; k++) {
+            double d = s.distancesM()[k];
+            if (Double.isNaN(d)) {
+                d = 0.0; // a reading that is not a number counts as an obstacle at the rim, not as free space
+            }
+            if (!(d < s.rangeM() - 1e-6) || d < 0) {
+                continue;
+            }
+            double a = yawRad + s.anglesRad()[k];
+            double px = xM + (radiusM + d) * Math.cos(a);
+            double py = yM + (radiusM + d) * Math.sin(a);
+            boolean known = false;
+            for (int q = 0; q < m && !known; q++) {
+                known = Math.hypot(xs[q] - px, ys[q] - py) < MEMORY_SPACING_M;
+            }
+            if (!known) {
+                xs[m] = px;
+                ys[m] = py;
+                ms[m++] = s.simTimeMs();
+            }
+        }
+        int from = Math.max(0, m - MEMORY_POINTS);
+        hitX = Arrays.copyOfRange(xs, from, m);
+        hitY = Arrays.copyOfRange(ys, from, m);
+        hitMs = Arrays.copyOfRange(ms, from, m);
+    }
+}

@@ -1,0 +1,72 @@
+package org.proactiverobotics.engine.navigation;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.google.gson.Gson;
+import org.junit.jupiter.api.Test;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+
+/** Routes on the map known so far: round a wall, saved with the rule, re-planned when a wall appears on them. */
+class RouteFollowerTest {
+
+    private static final double RADIUS_M = 0.12;
+
+    /** A wall from (x, y0) to (x, y1), as a scan would mark it. */
+    private static void wall(OccupancyMap map, double x, double y0, double y1) {
+        for (double y = y0; y <= y1; y += OccupancyMap.CELL_M / 2) {
+            map.set(OccupancyMap.cell(x), OccupancyMap.cell(y), OccupancyMap.OCCUPIED);
+        }
+    }
+
+    @Test
+    void aWallAcrossTheWayIsGoneRoundNotThrough() {
+        OccupancyMap map = OccupancyMap.empty();
+        wall(map, 1.0, -1.0, 0.6);
+        RouteFollower follower = new RouteFollower();
+        assertThat(follower.step(map, 0, 0, 2, 0, 0.1, RADIUS_M)).isEqualTo(RouteFollower.Status.TARGET);
+        assertThat(follower.targetX()).as("not straight at the goal behind the wall").isNotEqualTo(2.0);
+        assertThat(follower.targetY()).as("round the wall's open end").isGreaterThan(0.6);
+        assertThat(follower.remainingM(0, 0, 2, 0)).isGreaterThan(2.2);
+        Route route = RoutePlanner.plan(map, 0, 0, 2, 0, 0.1, RADIUS_M);
+        assertThat(route.size()).as("a few waypoints, not a chain of cells").isLessThan(8);
+    }
+
+    @Test
+    void aFollowerSavedAndRestoredFollowsTheSameRoute() {
+        OccupancyMap map = OccupancyMap.empty();
+        wall(map, 1.0, -1.0, 0.6);
+        RouteFollower follower = new RouteFollower();
+        follower.step(map, 0, 0, 2, 0, 0.1, RADIUS_M);
+        Gson gson = new Gson();
+        RouteFollower restored = gson.fromJson(gson.toJson(follower), RouteFollower.class);
+        follower.step(map, 0.05, 0.05, 2, 0, 0.1, RADIUS_M);
+        restored.step(map, 0.05, 0.05, 2, 0, 0.1, RADIUS_M);
+        assertThat(restored.targetX()).isEqualTo(follower.targetX());
+        assertThat(restored.targetY()).isEqualTo(follower.targetY());
+        assertThat(gson.toJson(restored)).isEqualTo(gson.toJson(follower));
+    }
+
+    @Test
+    void aWallThatAppearsOnTheRouteMakesItPlanAgain() {
+        OccupancyMap map = OccupancyMap.empty();
+        RouteFollower follower = new RouteFollower();
+        follower.step(map, 0, 0, 3, 0, 0.1, RADIUS_M);
+        assertThat(follower.targetX()).as("nothing known: straight at the goal").isEqualTo(3.0);
+        wall(map, 1.5, -0.8, 1.0);
+        follower.step(map, 0.02, 0, 3, 0, 0.1, RADIUS_M);
+        assertThat(follower.targetX()).as("no longer straight at the goal").isNotEqualTo(3.0);
+        assertThat(follower.targetY()).as("round the wall's lower end, the nearer").isLessThan(-0.8);
+    }
+
+    @Test
+    void aGoalInsideAClosedRingHasNoRoute() {
+        OccupancyMap map = OccupancyMap.empty();
+        for (int a = 0; a < 360; a++) {
+            double t = Math.toRadians(a);
+            map.set(OccupancyMap.cell(2 + 0.5 * Math.cos(t)), OccupancyMap.cell(0.5 * Math.sin(t)), OccupancyMap.OCCUPIED);
+        }
+        RouteFollower follower = new RouteFollower();
+        assertThat(follower.step(map, 0, 0, 2, 0, 0.1, RADIUS_M)).isEqualTo(RouteFollower.Status.NO_ROUTE);
+        assertThat(follower.plansWithoutRoute()).isEqualTo(1);
+    }
+}
