@@ -23,6 +23,12 @@ public final class KnownMap {
         this.table = table;
     }
 
+    /** Forgets the map held: the next use reads the rows whole (after a start, a resume, or rows deleted for a new robot run). */
+    public synchronized void forget() {
+        map = null;
+        refreshedIteration = -1;
+    }
+
     /**
      * @param iteration the engine's iteration
      * @param nowMs     the simulated time of the newest reading the caller has, milliseconds

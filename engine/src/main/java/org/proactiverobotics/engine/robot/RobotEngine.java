@@ -95,11 +95,14 @@ public final class RobotEngine {
     private final IterationTransaction transaction;
     private final ScenarioRegistry registry;
     private final List<String> order;
+    /** The map as the rules know it: read again from the rows after a start or a resume. */
+    private final KnownMap knownMap;
     /** An iteration ran in memory but its transaction did not commit. */
     private boolean aheadOfDatabase;
 
     private RobotEngine(ProactiveEngine engine, EngineTables tables, IterationTransaction transaction,
-                        ScenarioRegistry registry, List<String> order) {
+                        ScenarioRegistry registry, List<String> order, KnownMap knownMap) {
+        this.knownMap = knownMap;
         this.engine = engine;
         this.tables = tables;
         this.transaction = transaction;
@@ -147,6 +150,7 @@ public final class RobotEngine {
 
     /** Starts from StartUp, discarding any saved state of this robot's engine. */
     public void startFresh() {
+        knownMap.forget();
         engine.startFresh(new StartUp(order));
     }
 
@@ -156,6 +160,7 @@ public final class RobotEngine {
      * @return whether a saved state was resumed
      */
     public boolean resume() {
+        knownMap.forget();
         engine.start(new StartUp(order));
         return engine.resumed();
     }
@@ -421,6 +426,7 @@ public final class RobotEngine {
             }
 
             OccupancyMapTable mapTable = mapTable(base);
+            KnownMap knownMap = new KnownMap(mapTable);
             ProactiveEngine.Builder b = ProactiveEngine.builder()
                     .robotId(robotId)
                     .algorithm(algorithm)
@@ -432,7 +438,7 @@ public final class RobotEngine {
                     .service(StrategyTable.class, wired.strategy())
                     .service(EngineComments.class, wired.comments())
                     .service(OccupancyMapTable.class, mapTable)
-                    .service(KnownMap.class, new KnownMap(mapTable))
+                    .service(KnownMap.class, knownMap)
                     .service(DriveProfile.class, drive);
             freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {
@@ -442,7 +448,7 @@ public final class RobotEngine {
             if (stateStore == null) {
                 throw new IllegalStateException("give the engine a state store with its tables");
             }
-            return new RobotEngine(b.build(), wired, transaction, registry, List.copyOf(order));
+            return new RobotEngine(b.build(), wired, transaction, registry, List.copyOf(order), knownMap);
         }
     }
 }
