@@ -182,29 +182,8 @@ public final class CollisionReflex {
                     }
                 }
             }
-            if (map != null && occupiedCloser(map, xM, yM, px, py, keep)) {
+            if (map != null && map.occupiedApproached(xM, yM, px, py, keep)) {
                 return true;
-            }
-        }
-        return false;
-    }
-
-    /** Whether an occupied cell's centre lies within {@code keepM} of (px, py) and closer to it than to (x0, y0). */
-    private static boolean occupiedCloser(OccupancyMap map, double x0, double y0, double px, double py, double keepM) {
-        int i0 = OccupancyMap.cell(px - keepM);
-        int i1 = OccupancyMap.cell(px + keepM);
-        int j0 = OccupancyMap.cell(py - keepM);
-        int j1 = OccupancyMap.cell(py + keepM);
-        double keep2 = keepM * keepM;
-        for (int j = j0; j <= j1; j++) {
-            double cy = OccupancyMap.centre(j);
-            for (int i = i0; i <= i1; i++) {
-                double cx = OccupancyMap.centre(i);
-                double d2 = (cx - px) * (cx - px) + (cy - py) * (cy - py);
-                if (d2 < keep2 && d2 < (cx - x0) * (cx - x0) + (cy - y0) * (cy - y0) - 1e-6
-                        && map.get(i, j) == OccupancyMap.OCCUPIED) {
-                    return true;
-                }
             }
         }
         return false;

@@ -174,31 +174,11 @@ public final class RouteFollower {
             double px = x0 + t * (x1 - x0);
             double py = y0 + t * (y1 - y0);
             if (t * len < RoutePlanner.START_CLEAR_M
-                    ? occupiedApproached(map, x0, y0, px, py, clearM - NEAR_SLACK_M)
+                    ? map.occupiedApproached(x0, y0, px, py, clearM - NEAR_SLACK_M)
                     : map.occupiedWithin(px, py, clearM)) {
                 return false;
             }
         }
         return true;
-    }
-
-    /** Whether an occupied cell's centre lies within {@code keepM} of (px, py) and closer to it than to (x0, y0). */
-    private static boolean occupiedApproached(OccupancyMap map, double x0, double y0, double px, double py, double keepM) {
-        int i0 = OccupancyMap.cell(px - keepM);
-        int i1 = OccupancyMap.cell(px + keepM);
-        int j0 = OccupancyMap.cell(py - keepM);
-        int j1 = OccupancyMap.cell(py + keepM);
-        for (int j = j0; j <= j1; j++) {
-            double cy = OccupancyMap.centre(j);
-            for (int i = i0; i <= i1; i++) {
-                double cx = OccupancyMap.centre(i);
-                double d2 = (cx - px) * (cx - px) + (cy - py) * (cy - py);
-                if (d2 < keepM * keepM && d2 < (cx - x0) * (cx - x0) + (cy - y0) * (cy - y0) - 1e-6
-                        && map.get(i, j) == OccupancyMap.OCCUPIED) {
-                    return true;
-                }
-            }
-        }
-        return false;
     }
 }
