@@ -6,17 +6,22 @@ import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
  * When an obstacle is within {@link #slowWithinM} ahead (±60°), suggests heading for the next
- * checkpoint at no more than {@link #slowSpeedMps}. Lazy evaluation at work: the guard needs
- * only the distance scan; the GPS, heading and checkpoints are read only when it holds.
+ * checkpoint at no more than {@link #slowSpeedMps}, along the route the engine's navigation
+ * library plans on the map known so far (straight at the checkpoint would drive into the
+ * obstacle). Lazy evaluation at work: the guard needs only the distance scan; the GPS, heading,
+ * checkpoints and map are read only when it holds.
  */
 public final class Govern extends Rule {
 
@@ -24,6 +29,8 @@ public final class Govern extends Rule {
     private double slowWithinM = 0.5;
     /** The top wheel speed near obstacles, metres per second. */
     private double slowSpeedMps = 0.2;
+    /** The route to the checkpoint: plain fields, saved with the rule like the two above. */
+    private RouteFollower route = new RouteFollower();
 
     // Acquired each iteration: transient, never saved.
     private transient double nearestM;
@@ -65,7 +72,15 @@ public final class Govern extends Rule {
     @Override
     protected void actions(RuleContext ctx) {
         DriveProfile slow = new DriveProfile(slowSpeedMps, ctx.service(DriveProfile.class).axleWidthM());
-        ctx.suggest(Steering.goTo(gps.xM(), gps.yM(), heading.yawRad(), target.xM(), target.yM(), slow));
+        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), gps.simTimeMs());
+        double aimX = target.xM();
+        double aimY = target.yM();
+        if (route.step(map, gps.xM(), gps.yM(), target.xM(), target.yM(), 0.5 * target.radiusM(),
+                slow.axleWidthM() / 2) == RouteFollower.Status.TARGET) {
+            aimX = route.targetX();
+            aimY = route.targetY();
+        }
+        ctx.suggest(Steering.goTo(gps.xM(), gps.yM(), heading.yawRad(), aimX, aimY, slow));
     }
 
     /** Always runs: the rule clones itself to watch again in the next iteration. */
