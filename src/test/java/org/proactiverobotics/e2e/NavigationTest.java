@@ -110,5 +110,7 @@ class NavigationTest {
         assertThat(run.report().outcome()).as("see %s", run.outDir()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
         assertThat(run.report().collisions()).isZero();
         assertThat(run.report().minBattery()).isPositive();
+        // a noisy fix at the station's edge does not break one stop into several charging sessions
+        assertThat(run.report().recharges()).isLessThanOrEqualTo(Missions.direct(world, "safety-first").report().recharges());
     }
 }

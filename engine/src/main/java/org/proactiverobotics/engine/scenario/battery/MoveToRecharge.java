@@ -31,6 +31,11 @@ public final class MoveToRecharge extends Rule {
 
     /** Charges only well inside the station, so the simulator agrees the robot is there. */
     static final double AT_STATION_FRACTION = 0.6;
+    /**
+     * Once arrived, it keeps charging while the GPS puts it this deep in the station: a noisy fix
+     * near the arrival edge would otherwise alternate RECHARGE and a drive, each a new charging session.
+     */
+    static final double STAY_FRACTION = 0.85;
     /** Close enough to the target level, percent. */
     static final double FULL_TOLERANCE_PCT = 0.5;
     /** A scan this far behind the heading is stale: driving blind, milliseconds. */
@@ -104,7 +109,8 @@ public final class MoveToRecharge extends Rule {
 
     @Override
     protected void actions(RuleContext ctx) {
-        if (position.distanceTo(xM, yM) < radiusM * AT_STATION_FRACTION) {
+        double fromStationM = position.distanceTo(xM, yM);
+        if (fromStationM < radiusM * AT_STATION_FRACTION || arrived && fromStationM < radiusM * STAY_FRACTION) {
             if (!arrived) {
                 arrived = true;
                 drain.trip(tripDrivenM, tripPlannedM);
