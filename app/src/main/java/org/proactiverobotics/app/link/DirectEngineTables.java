@@ -88,17 +88,17 @@ public final class DirectEngineTables
 
     @Override
     public List<MapChunk> readMap() {
-        return rows.readMap();
+        return rows.map().readMap();
     }
 
     @Override
     public List<MapChunk> readMapSince(long simTimeMs) {
-        return rows.readMapSince(simTimeMs);
+        return rows.map().readMapSince(simTimeMs);
     }
 
     @Override
     public void writeChunks(List<MapChunk> chunks, long simTimeMs) {
-        rows.writeChunks(chunks, simTimeMs);
+        rows.map().writeChunks(chunks, simTimeMs);
     }
 
     @Override

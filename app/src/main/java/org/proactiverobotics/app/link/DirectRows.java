@@ -4,17 +4,14 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.Iterator;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
-import java.util.TreeMap;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
-import org.proactiverobotics.engine.tables.MapChunk;
+import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.engine.tables.StrategyTable;
 import org.proactiverobotics.robot.link.BatteryReading;
@@ -57,11 +54,8 @@ final class DirectRows {
     private Station station;
     private Double rechargeLevelPct;
     private List<StrategyTable.Entry> strategy = List.of();
-    /** occupancy_map rows by (chunk_x, chunk_y), in the JDBC read's order. */
-    private final TreeMap<List<Integer>, MapChunk> map = new TreeMap<>(
-            Comparator.<List<Integer>>comparingInt(k -> k.get(0)).thenComparingInt(k -> k.get(1)));
-    /** occupancy_map's updated_sim_time_ms by (chunk_x, chunk_y). */
-    private final Map<List<Integer>, Long> mapWrittenMs = new HashMap<>();
+    /** occupancy_map's rows: the engine side alone writes and reads them. */
+    private final OccupancyMapTable map = OccupancyMapTable.inMemory();
     private long requestIds;
     private long commandIds;
 
@@ -241,31 +235,9 @@ final class DirectRows {
         return false;
     }
 
-    synchronized List<MapChunk> readMap() {
-        List<MapChunk> out = new ArrayList<>(map.size());
-        for (MapChunk c : map.values()) {
-            out.add(new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
-        }
-        return out;
-    }
-
-    /** The chunks written with readings of this simulated time or later, as occupancy_map's updated_sim_time_ms tells. */
-    synchronized List<MapChunk> readMapSince(long simTimeMs) {
-        List<MapChunk> out = new ArrayList<>();
-        map.forEach((k, c) -> {
-            if (mapWrittenMs.get(k) >= simTimeMs) {
-                out.add(new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
-            }
-        });
-        return out;
-    }
-
-    synchronized void writeChunks(List<MapChunk> chunks, long simTimeMs) {
-        for (MapChunk c : chunks) {
-            List<Integer> k = List.of(c.chunkX(), c.chunkY());
-            map.put(k, new MapChunk(c.chunkX(), c.chunkY(), c.cells().clone()));
-            mapWrittenMs.put(k, simTimeMs);
-        }
+    /** @return occupancy_map's rows, kept in memory */
+    OccupancyMapTable map() {
+        return map;
     }
 
     synchronized Station station() {

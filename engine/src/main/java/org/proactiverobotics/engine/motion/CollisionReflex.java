@@ -103,13 +103,11 @@ public final class CollisionReflex {
                       DriveProfile profile, Clearance c) {
         double radiusM = profile.axleWidthM() / 2;
         remember(s, xM, yM, yawRad, radiusM);
-        double backSpeed = -BACK_SPEED * profile.maxSpeedMps();
         if (backing > 0) {
-            backing--;
-            if (!hitsWithin(map, xM, yM, yawRad, radiusM, backSpeed, 0.0, BACK_REACH_M)) {
-                return Steering.drive(backSpeed, 0.0, profile);
+            String back = backOff(map, xM, yM, yawRad, profile);
+            if (back != null) {
+                return back;
             }
-            backing = 0; // something behind too: turn instead
         }
         if (intended == null) {
             turning = 0;
@@ -138,20 +136,30 @@ public final class CollisionReflex {
         if (++vetoes >= STUCK_VETOES) {
             vetoes = 0; // the way it wants stays blocked however it turns: back off a little, then let it try again
             backing = BACK_ITERATIONS;
-            if (!hitsWithin(map, xM, yM, yawRad, radiusM, backSpeed, 0.0, BACK_REACH_M)) {
-                backing--;
-                return Steering.drive(backSpeed, 0.0, profile);
+            String back = backOff(map, xM, yM, yawRad, profile);
+            if (back != null) {
+                return back;
             }
-            backing = 0;
         }
-        if (guarded != 0) {
-            // turning stays away from the guarded flank
-        } else if (Math.abs(turnRate) > 0.05) {
-            turning = turnRate > 0 ? +1 : -1; // the way the command was turning
-        } else if (turning == 0) {
-            turning = s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
+        if (guarded == 0) { // else turning stays away from the guarded flank
+            if (Math.abs(turnRate) > 0.05) {
+                turning = turnRate > 0 ? +1 : -1; // the way the command was turning
+            } else if (turning == 0) {
+                turning = s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
+            }
         }
         return Steering.drive(0.0, turning * TURN_RAD_S, profile);
+    }
+
+    /** One step of backing off straight, or null (and no more backing) when something is behind too. */
+    private String backOff(OccupancyMap map, double xM, double yM, double yawRad, DriveProfile profile) {
+        double backSpeed = -BACK_SPEED * profile.maxSpeedMps();
+        backing--;
+        if (!hitsWithin(map, xM, yM, yawRad, profile.axleWidthM() / 2, backSpeed, 0.0, BACK_REACH_M)) {
+            return Steering.drive(backSpeed, 0.0, profile);
+        }
+        backing = 0;
+        return null;
     }
 
     /** Whether the body, driven along the command's arc for {@code reachM}, comes closer than the margin to a hit. */

@@ -102,13 +102,25 @@ public final class Steering {
         if (command.equals(STOP) || command.equals(RECHARGE)) {
             return new double[] {0.0, 0.0};
         }
-        String[] words = command.split(" ");
+        int first = command.indexOf(' ');
+        if (first < 0) {
+            return null;
+        }
+        int second = command.indexOf(' ', first + 1);
+        String word = command.substring(0, first);
         try {
-            return switch (words[0]) {
-                case "DRIVE" -> words.length == 3 ? new double[] {Double.parseDouble(words[1]), Double.parseDouble(words[2])} : null;
-                case "FORWARD" -> words.length == 2 ? new double[] {Double.parseDouble(words[1]), Double.parseDouble(words[1])} : null;
-                case "TURN_LEFT" -> words.length == 2 ? new double[] {-Double.parseDouble(words[1]), Double.parseDouble(words[1])} : null;
-                case "TURN_RIGHT" -> words.length == 2 ? new double[] {Double.parseDouble(words[1]), -Double.parseDouble(words[1])} : null;
+            if (word.equals("DRIVE")) {
+                return second < 0 ? null : new double[] {Double.parseDouble(command.substring(first + 1, second)),
+                        Double.parseDouble(command.substring(second + 1))};
+            }
+            if (second >= 0) {
+                return null;
+            }
+            double v = Double.parseDouble(command.substring(first + 1));
+            return switch (word) {
+                case "FORWARD" -> new double[] {v, v};
+                case "TURN_LEFT" -> new double[] {-v, v};
+                case "TURN_RIGHT" -> new double[] {v, -v};
                 default -> null;
             };
         } catch (NumberFormatException e) {
