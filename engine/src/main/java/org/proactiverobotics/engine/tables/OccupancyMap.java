@@ -1,10 +1,8 @@
 package org.proactiverobotics.engine.tables;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Set;
 
 /**
@@ -18,6 +16,9 @@ public final class OccupancyMap {
     public static final double CELL_M = 0.05;
     /** Cells along a chunk's side. */
     public static final int CHUNK_CELLS = 16;
+    // floorDiv and floorMod by CHUNK_CELLS (a power of two), negative indices included
+    private static final int CHUNK_SHIFT = 4;
+    private static final int CHUNK_MASK = CHUNK_CELLS - 1;
     /** Never seen. */
     public static final byte UNKNOWN = 0;
     /** A ray crossed it. */
@@ -25,7 +26,16 @@ public final class OccupancyMap {
     /** A ray ended on it. */
     public static final byte OCCUPIED = 2;
 
-    private final Map<Long, byte[]> chunks = new HashMap<>();
+    // Chunks in a dense row-major array over a rectangle of chunk indices that grows as the map
+    // does: a lookup is an index, not a hash (Long keys hash to cx ^ cy, which collides along diagonals).
+    private byte[][] chunks = new byte[0][];
+    /** The most chunks the array may span: a square of about 3 km on a side (128 MB of references at most). */
+    private static final long MAX_CHUNKS = 1L << 24;
+    private int originCx;
+    private int originCy;
+    private int columns;
+    private int rows;
+    private int stored;
     private final Set<Long> changed = new LinkedHashSet<>();
     private int minCx = Integer.MAX_VALUE;
     private int minCy = Integer.MAX_VALUE;
@@ -43,15 +53,57 @@ public final class OccupancyMap {
      */
     public static OccupancyMap of(List<MapChunk> rows) {
         OccupancyMap map = new OccupancyMap();
-        for (MapChunk c : rows) {
-            map.chunks.put(key(c.chunkX(), c.chunkY()), c.cells().clone());
-            map.extend(c.chunkX(), c.chunkY());
-        }
+        map.putAll(rows);
         return map;
     }
 
     static long key(int cx, int cy) {
         return ((long) cx << 32) | (cy & 0xffffffffL);
+    }
+
+    /** @return the chunk at chunk indices (cx, cy), or null when none is stored */
+    private byte[] chunk(int cx, int cy) {
+        int a = cx - originCx;
+        int b = cy - originCy;
+        return a < 0 || b < 0 || a >= columns || b >= rows ? null : chunks[b * columns + a];
+    }
+
+    /** Stores a chunk at chunk indices (cx, cy), growing the array (with room to spare) when it lies outside. */
+    private void put(int cx, int cy, byte[] cells) {
+        if (cx < originCx || cy < originCy || cx >= originCx + columns || cy >= originCy + rows) {
+            boolean none = columns == 0;
+            int loX = none ? cx : Math.min(cx, originCx);
+            int loY = none ? cy : Math.min(cy, originCy);
+            int hiX = none ? cx : Math.max(cx, originCx + columns - 1);
+            int hiY = none ? cy : Math.max(cy, originCy + rows - 1);
+            int spareX = Math.max(4, (hiX - loX + 1) / 2);
+            int spareY = Math.max(4, (hiY - loY + 1) / 2);
+            loX -= spareX;
+            hiX += spareX;
+            loY -= spareY;
+            hiY += spareY;
+            int w = hiX - loX + 1;
+            long size = (long) w * (hiY - loY + 1);
+            if (size > MAX_CHUNKS) {
+                throw new IllegalStateException("the occupancy map would span " + size + " chunks of "
+                        + CHUNK_CELLS * CELL_M + " m (more than " + MAX_CHUNKS + "): chunk (" + cx + ", " + cy + ") is too far away");
+            }
+            byte[][] grown = new byte[(int) size][];
+            for (int b = 0; b < rows; b++) {
+                System.arraycopy(chunks, b * columns, grown, (originCy + b - loY) * w + originCx - loX, columns);
+            }
+            chunks = grown;
+            originCx = loX;
+            originCy = loY;
+            columns = w;
+            rows = hiY - loY + 1;
+        }
+        int at = (cy - originCy) * columns + cx - originCx;
+        if (chunks[at] == null) {
+            stored++;
+        }
+        chunks[at] = cells;
+        extend(cx, cy);
     }
 
     /** @return the cell index (column) holding an x, or row holding a y, metres */
@@ -81,14 +133,18 @@ public final class OccupancyMap {
      * @param visitor told of each occupied cell
      */
     public void forEachOccupied(CellVisitor visitor) {
-        for (Map.Entry<Long, byte[]> e : chunks.entrySet()) {
-            long k = e.getKey();
-            int cx = (int) (k >> 32);
-            int cy = (int) k;
-            byte[] c = e.getValue();
-            for (int q = 0; q < c.length; q++) {
-                if (c[q] == OCCUPIED) {
-                    visitor.cell(cx * CHUNK_CELLS + q % CHUNK_CELLS, cy * CHUNK_CELLS + q / CHUNK_CELLS);
+        for (int b = 0; b < rows; b++) {
+            for (int a = 0; a < columns; a++) {
+                byte[] c = chunks[b * columns + a];
+                if (c == null) {
+                    continue;
+                }
+                int cx = originCx + a;
+                int cy = originCy + b;
+                for (int q = 0; q < c.length; q++) {
+                    if (c[q] == OCCUPIED) {
+                        visitor.cell(cx * CHUNK_CELLS + q % CHUNK_CELLS, cy * CHUNK_CELLS + q / CHUNK_CELLS);
+                    }
                 }
             }
         }
@@ -96,8 +152,8 @@ public final class OccupancyMap {
 
     /** @return the state of a cell (column i, row j) */
     public byte get(int i, int j) {
-        byte[] c = chunks.get(key(Math.floorDiv(i, CHUNK_CELLS), Math.floorDiv(j, CHUNK_CELLS)));
-        return c == null ? UNKNOWN : c[Math.floorMod(j, CHUNK_CELLS) * CHUNK_CELLS + Math.floorMod(i, CHUNK_CELLS)];
+        byte[] c = chunk(i >> CHUNK_SHIFT, j >> CHUNK_SHIFT);
+        return c == null ? UNKNOWN : c[(j & CHUNK_MASK) * CHUNK_CELLS + (i & CHUNK_MASK)];
     }
 
     /**
@@ -109,14 +165,13 @@ public final class OccupancyMap {
         int cx = Math.floorDiv(i, CHUNK_CELLS);
         int cy = Math.floorDiv(j, CHUNK_CELLS);
         long k = key(cx, cy);
-        byte[] c = chunks.get(k);
+        byte[] c = chunk(cx, cy);
         if (c == null) {
             if (state == UNKNOWN) {
                 return false;
             }
             c = new byte[CHUNK_CELLS * CHUNK_CELLS];
-            chunks.put(k, c);
-            extend(cx, cy);
+            put(cx, cy, c);
         }
         int at = Math.floorMod(j, CHUNK_CELLS) * CHUNK_CELLS + Math.floorMod(i, CHUNK_CELLS);
         if (c[at] == state) {
@@ -136,7 +191,7 @@ public final class OccupancyMap {
 
     /** @return whether no chunk is stored */
     public boolean isEmpty() {
-        return chunks.isEmpty();
+        return stored == 0;
     }
 
     /** @return the lowest column of a stored chunk's cells (undefined when empty) */
@@ -153,7 +208,7 @@ public final class OccupancyMap {
     public List<MapChunk> takeChanged() {
         List<MapChunk> out = new ArrayList<>(changed.size());
         for (long k : changed) {
-            out.add(new MapChunk((int) (k >> 32), (int) k, chunks.get(k).clone()));
+            out.add(new MapChunk((int) (k >> 32), (int) k, chunk((int) (k >> 32), (int) k).clone()));
         }
         changed.clear();
         return out;
@@ -171,21 +226,11 @@ public final class OccupancyMap {
         int j0 = cell(yM - radiusM);
         int j1 = cell(yM + radiusM);
         double r2 = radiusM * radiusM;
-        long lastKey = Long.MIN_VALUE;
-        byte[] c = null;
         for (int j = j0; j <= j1; j++) {
             double dy = centre(j) - yM;
             for (int i = i0; i <= i1; i++) {
                 double dx = centre(i) - xM;
-                if (dx * dx + dy * dy > r2) {
-                    continue;
-                }
-                long k = key(Math.floorDiv(i, CHUNK_CELLS), Math.floorDiv(j, CHUNK_CELLS));
-                if (k != lastKey) {
-                    c = chunks.get(k);
-                    lastKey = k;
-                }
-                if (c != null && c[Math.floorMod(j, CHUNK_CELLS) * CHUNK_CELLS + Math.floorMod(i, CHUNK_CELLS)] == OCCUPIED) {
+                if (dx * dx + dy * dy <= r2 && get(i, j) == OCCUPIED) {
                     return true;
                 }
             }
@@ -230,15 +275,17 @@ public final class OccupancyMap {
      */
     public void putAll(List<MapChunk> rows) {
         for (MapChunk c : rows) {
-            chunks.put(key(c.chunkX(), c.chunkY()), c.cells().clone());
-            extend(c.chunkX(), c.chunkY());
+            put(c.chunkX(), c.chunkY(), c.cells().clone());
         }
     }
 
     /** @return how many cells are occupied */
     public int occupiedCells() {
         int n = 0;
-        for (byte[] c : chunks.values()) {
+        for (byte[] c : chunks) {
+            if (c == null) {
+                continue;
+            }
             for (byte b : c) {
                 if (b == OCCUPIED) {
                     n++;

@@ -1,0 +1,63 @@
+package org.proactiverobotics.engine.tables;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+class OccupancyMapTest {
+
+    @Test
+    void cellsSetAnywhereReadBackWhateverOrderTheMapGrewIn() {
+        OccupancyMap map = OccupancyMap.empty();
+        Map<Long, Byte> expected = new HashMap<>();
+        Random random = new Random(7);
+        for (int n = 0; n < 5000; n++) {
+            // negative and positive indices, chunks on diagonals (whose Long keys used to collide)
+            int i = random.nextInt(2000) - 1000;
+            int j = random.nextInt(2000) - 1000;
+            byte state = (byte) (1 + random.nextInt(2));
+            map.set(i, j, state);
+            expected.put(OccupancyMap.key(i, j), state);
+        }
+        expected.forEach((k, state) -> assertThat(map.get((int) (k >> 32), (int) (long) k)).isEqualTo(state));
+        assertThat(map.get(5000, -5000)).isEqualTo(OccupancyMap.UNKNOWN);
+        assertThat(map.occupiedCells()).isEqualTo((int) expected.values().stream().filter(s -> s == OccupancyMap.OCCUPIED).count());
+        assertThat(map.minCell(true)).isLessThanOrEqualTo(-1000);
+        assertThat(map.maxCellExclusive(true)).isGreaterThan(999);
+    }
+
+    @Test
+    void changedChunksRebuildTheSameMapAndTheOccupiedCellsAreVisitedOnce() {
+        OccupancyMap map = OccupancyMap.empty();
+        map.set(-1, -1, OccupancyMap.OCCUPIED);
+        map.set(40, 3, OccupancyMap.OCCUPIED);
+        map.set(40, 4, OccupancyMap.FREE);
+        map.set(-300, 200, OccupancyMap.OCCUPIED);
+        List<MapChunk> chunks = map.takeChanged();
+        assertThat(chunks).hasSize(3);
+        assertThat(map.takeChanged()).isEmpty();
+
+        OccupancyMap copy = OccupancyMap.of(chunks);
+        List<String> visited = new ArrayList<>();
+        copy.forEachOccupied((i, j) -> visited.add(i + "," + j));
+        assertThat(visited).containsExactlyInAnyOrder("-1,-1", "40,3", "-300,200");
+        assertThat(copy.get(40, 4)).isEqualTo(OccupancyMap.FREE);
+        assertThat(copy.occupiedWithin(OccupancyMap.centre(40), OccupancyMap.centre(3) + 0.06, 0.07)).isTrue();
+        assertThat(copy.occupiedWithin(OccupancyMap.centre(40), OccupancyMap.centre(3) + 0.06, 0.05)).isFalse();
+    }
+
+    @Test
+    void aChunkKilometresAwayIsRefusedWithItsPlace() {
+        OccupancyMap map = OccupancyMap.empty();
+        map.set(0, 0, OccupancyMap.OCCUPIED);
+        assertThatThrownBy(() -> map.set(10_000_000, 0, OccupancyMap.OCCUPIED))
+                .isInstanceOf(IllegalStateException.class).hasMessageContaining("too far away");
+        assertThat(map.get(0, 0)).isEqualTo(OccupancyMap.OCCUPIED);
+    }
+}
