@@ -70,8 +70,8 @@ public final class RobotEngine {
     /** The start order, for the javadoc. */
     static final String ORDER_TEXT = "DataAcquisition, Mapping, BatteryMonitor, ReachDestination,"
             + " the plug-ins in the order given, ObstacleAvoidance, FailSafe, DecisionMaking";
-    /** Prune the engine's history every this many iterations. */
-    public static final int PRUNE_EVERY = 100;
+    /** Prune the engine's history every this many iterations (finding the cut-off walks the kept rows: seldom is cheaper). */
+    public static final int PRUNE_EVERY = 500;
     /** Keep this many of the robot's newest commands, answered requests and rule failures. */
     public static final int KEEP_ROWS = 1000;
 
