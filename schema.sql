@@ -207,3 +207,17 @@ CREATE TABLE IF NOT EXISTS engine_clock (
   iteration  BIGINT       NOT NULL,
   updated_at TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3)
 );
+
+-- Which engine process serves a robot, when several engines share a fleet (`engine --robot-ids`).
+-- An engine takes the row when it is free or expired (taking it bumps epoch) and renews it in
+-- every iteration's own transaction, checking owner and epoch: an engine that lost the row
+-- commits nothing more for that robot, so two engines never both drive it. Times are the
+-- database server's (one clock for every engine, on every machine).
+CREATE TABLE IF NOT EXISTS engine_lease (
+  robot_id   INT          NOT NULL PRIMARY KEY,
+  owner      VARCHAR(128) NOT NULL,
+  epoch      BIGINT       NOT NULL,
+  iteration  BIGINT       NOT NULL DEFAULT 0,
+  expires_at TIMESTAMP(3) NOT NULL,
+  taken_at   TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3)
+);

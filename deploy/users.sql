@@ -33,6 +33,7 @@ GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_queue TO '@ENGINE_US
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.rule_failures TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_clock TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.occupancy_map TO '@ENGINE_USER@'@'@HOST@';
+GRANT SELECT, INSERT, UPDATE ON `@DATABASE@`.engine_lease TO '@ENGINE_USER@'@'@HOST@';
 
 -- ---- The robot: writes its readings, answers requests, reads commands ----------------------
 -- DELETE on its readings: the retention policy, and a new run starting clean

@@ -26,9 +26,9 @@ class ComposeFileTest {
 
     @Test
     void mysqlOnAPinnedImageAndTheProcessesOnTheApplicationsImageBuiltFromTheDockerfile() throws Exception {
-        assertThat(compose.services()).containsOnlyKeys("mysql", "engine", "robot", "watch");
+        assertThat(compose.services()).containsOnlyKeys("mysql", "engine", "robot", "watch", "fleet-engine");
         assertThat(compose.service("mysql").image()).matches("mysql:8\\.4\\.\\d+");
-        for (String name : List.of("engine", "robot", "watch")) {
+        for (String name : List.of("engine", "robot", "watch", "fleet-engine")) {
             assertThat(compose.service(name).image()).as(name).isEqualTo("proactive-robotics:local");
             assertThat(compose.service(name).get("build")).as(name).isEqualTo(Map.of("context", "."));
         }
@@ -55,7 +55,7 @@ class ComposeFileTest {
             services = (Map<String, Object>) override.get("services");
         }
         assertThat(services.get("mysql")).isEqualTo(Map.of("image", "proactive-ci/mariadb:10.11"));
-        for (String name : List.of("engine", "robot", "watch")) {
+        for (String name : List.of("engine", "robot", "watch", "fleet-engine")) {
             // the base images of the application's build, and the network that build needs on the CI's dockerd
             assertThat(services.get(name)).as(name).isEqualTo(Map.of("build", Map.of("network", "host",
                     "args", Map.of("BUILD_IMAGE", "proactive-ci/jdk:17", "RUNTIME_IMAGE", "proactive-ci/jre:17"))));
@@ -64,12 +64,12 @@ class ComposeFileTest {
 
     @Test
     void everyServiceHasAHealthCheckAndTheProcessesWaitForAHealthyDatabase() {
-        for (String name : List.of("mysql", "engine", "robot", "watch")) {
+        for (String name : List.of("mysql", "engine", "robot", "watch", "fleet-engine")) {
             assertThat(compose.service(name).healthcheck()).as(name).containsKeys("test", "interval", "retries");
         }
         assertThat(String.valueOf(compose.service("mysql").healthcheck().get("test")))
                 .contains("mysqladmin").contains("ping").contains("127.0.0.1");
-        for (String name : List.of("engine", "robot")) {
+        for (String name : List.of("engine", "robot", "fleet-engine")) {
             assertThat(compose.service(name).dependsOn()).as(name)
                     .containsEntry("mysql", Map.of("condition", "service_healthy"));
             assertThat(String.valueOf(compose.service(name).healthcheck().get("test"))).contains("/tmp/proactive.heartbeat");
@@ -117,6 +117,12 @@ class ComposeFileTest {
         for (String name : List.of("engine", "robot", "watch")) {
             assertThat(compose.service(name).rawCommand()).as(name).containsSequence("--robot-id", "${ROBOT_ID:-1}");
         }
+        // a fleet: one engine process for the robots of ROBOT_IDS, scaled to K engines that share them (profile fleet)
+        Compose.Service fleet = compose.service("fleet-engine");
+        assertThat(fleet.rawCommand()).containsSequence("--robot-ids", "${ROBOT_IDS:-1-4}")
+                .containsSequence("--db-user", "proactive_engine");
+        assertThat(String.valueOf(fleet.environment().get("PROACTIVE_DB_PASSWORD"))).startsWith("${ENGINE_DB_PASSWORD");
+        assertThat(fleet.get("profiles")).isEqualTo(List.of("fleet"));
     }
 
     @Test

@@ -141,7 +141,7 @@ final class Deployment implements AutoCloseable {
      * Starts a compose service's command as an OS process: the jar's {@code java -jar} becomes the
      * test class path, the compose values (MySQL host and database, users) become this
      * deployment's, and each of {@code options} replaces the value of that option in the compose
-     * command (or is added when the command has none).
+     * command (or is added when the command has none; a null value removes the option the command has).
      */
     Process start(String service, Map<String, String> options, Path log) throws IOException {
         List<String> command = new ArrayList<>();
@@ -171,6 +171,9 @@ final class Deployment implements AutoCloseable {
                 }
             } else if (o.getValue() != null) {
                 args.set(at + 1, o.getValue());
+            } else { // null for an option the command has: drop it and its value
+                args.remove(at + 1);
+                args.remove(at);
             }
         }
         command.addAll(args);

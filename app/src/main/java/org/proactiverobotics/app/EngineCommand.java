@@ -1,19 +1,30 @@
 package org.proactiverobotics.app;
 
+import com.zaxxer.hikari.HikariConfig;
 import com.zaxxer.hikari.HikariDataSource;
 import java.io.PrintWriter;
+import java.net.InetAddress;
+import java.net.UnknownHostException;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.app.deploy.ProcessOptions;
 import org.proactiverobotics.app.deploy.EngineClock;
+import org.proactiverobotics.app.deploy.EngineLease;
 import org.proactiverobotics.app.deploy.EngineLoop;
+import org.proactiverobotics.app.deploy.RobotIds;
+import org.proactiverobotics.app.deploy.RobotServer;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.engine.CorruptStateException;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -28,11 +39,15 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "engine",
         mixinStandardHelpOptions = true,
-        description = {"Runs the proactive engine of one robot against a shared database until stopped.",
-                "Serves the runs of a `robot` process: one iteration per robot step (sync timing) or one per period (realtime).",
+        description = {"Runs the proactive engine of one robot, or of several (--robot-ids), against a shared database until stopped.",
+                "Serves the runs of `robot` processes: one iteration per robot step (sync timing) or one per period (realtime).",
+                "Each robot is served by one engine at a time, through its lease row: several engine processes may share a fleet,"
+                        + " and one takes over the robots of an engine that died once their leases expire (--lease-s, --standby-ids).",
                 "Resumes from the saved state; SIGTERM / Ctrl-C end the current iteration, save and exit 0.",
                 "Exit codes: 0 stopped, 2 bad input, 3 database not usable within --wait-s or saved state unreadable."})
 public final class EngineCommand implements Callable<Integer> {
+
+    private static final Logger LOG = LoggerFactory.getLogger(EngineCommand.class);
 
     @Mixin
     private DbOptions db;
@@ -58,6 +73,31 @@ public final class EngineCommand implements Callable<Integer> {
     @Option(names = "--period-ms", paramLabel = "MS", defaultValue = "32",
             description = "Real-time timing: one iteration every this many ms. Default: ${DEFAULT-VALUE}.")
     private long periodMs;
+
+    @Option(names = "--robot-ids", paramLabel = "LIST",
+            description = "Serve several robots, each with its own state, scenarios and strategy: ids and ranges,"
+                    + " e.g. 1-100 or 1,3,7-9 (instead of --robot-id). A robot that starts later is picked up.")
+    private String robotIds;
+
+    @Option(names = "--standby-ids", paramLabel = "LIST",
+            description = "Robots this engine takes over only when no other engine serves them (their engine died"
+                    + " or never started) for --lease-s: the other engines' robots, for fail-over.")
+    private String standbyIds;
+
+    @Option(names = "--threads", paramLabel = "N", defaultValue = "0",
+            description = "Threads serving the robots (each owns a share of them). Default: the number of robots,"
+                    + " at most twice the number of cores.")
+    private int threads;
+
+    @Option(names = "--engine-name", paramLabel = "NAME",
+            description = "This engine's name in the robots' leases, unique among the engines sharing a fleet;"
+                    + " a restarted engine takes its own leases back at once. Default: the host name and the robot ids.")
+    private String engineName;
+
+    @Option(names = "--lease-s", paramLabel = "S", defaultValue = "5",
+            description = "How long a robot's lease outlives its engine: another engine takes the robot over after"
+                    + " this many seconds without renewal. Default: ${DEFAULT-VALUE}.")
+    private double leaseS;
 
 
 
@@ -98,7 +138,7 @@ public final class EngineCommand implements Callable<Integer> {
 
     private int serve(ShutdownSignal signal, PrintWriter err, ScenarioOptions.Choice choice) {
         try {
-            if (!DatabaseWait.await(db, "engine_clock", signal::stopRequested)) {
+            if (!DatabaseWait.await(db, "engine_lease", signal::stopRequested)) {
                 return 0;
             }
         } catch (DatabaseWait.Unreachable e) {
@@ -106,13 +146,33 @@ public final class EngineCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }
-        try (HikariDataSource pool = Databases.pool(db.url(), db.user(), db.password())) {
-            RobotEngine side = RobotEngine.builder().robotId(process.robotId()).database(pool)
-                    .drive(new DriveProfile(maxSpeedMps, axleWidthM)).plugins(choice.plugins()).build();
-            EngineLoop loop = new EngineLoop(side, new EngineClock(pool, process.robotId()), process.robotId(),
-                    new EngineLoop.Options(choice.strategy(), fresh, periodMs, process.logEvery()), signal::stopRequested,
-                    process.heartbeat());
-            loop.run();
+        int[] ids = ids();
+        int robots = ids.length + (standbyIds == null ? 0 : RobotIds.parse(standbyIds).length);
+        int threadCount = threads > 0 ? threads : Math.min(robots, 2 * Runtime.getRuntime().availableProcessors());
+        HikariConfig config = Databases.config(db.url(), db.user(), db.password());
+        config.setMaximumPoolSize(2 * threadCount + 2); // an iteration's connection and a read beside it, per thread
+        try (HikariDataSource pool = new HikariDataSource(config)) {
+            String name = engineName != null ? engineName : defaultName();
+            long leaseMs = Math.round(leaseS * 1000);
+            EngineLoop.Options options = new EngineLoop.Options(choice.strategy(), fresh, periodMs, process.logEvery(), leaseMs);
+            DriveProfile drive = new DriveProfile(maxSpeedMps, axleWidthM);
+            List<RobotServer> servers = new ArrayList<>();
+            int[] standby = standbyIds == null ? new int[0] : RobotIds.parse(standbyIds);
+            for (int[] group : new int[][] {ids, standby}) {
+                for (int id : group) {
+                    EngineLease lease = new EngineLease(pool, id, name, leaseMs);
+                    ScenarioPlugins plugins = choice.plugins();
+                    servers.add(new RobotServer(id, robot -> RobotEngine.builder().robotId(robot).database(pool).drive(drive)
+                            .plugins(plugins).guard(lease::confirm).build(), new EngineClock(pool, id), lease, options,
+                            group == standby));
+                }
+            }
+            if (ids.length > 1 || standby.length > 0) {
+                LOG.info("engine {}: serving robots {}{} on {} thread(s), lease {} s", name,
+                        robotIds == null ? process.robotId() : robotIds,
+                        standby.length > 0 ? " (standby for " + standbyIds + ")" : "", threadCount, leaseS);
+            }
+            new EngineLoop(pool, servers, threadCount, signal::stopRequested, process.heartbeat()).run();
             return 0;
         } catch (CorruptStateException e) {
             err.println("the saved engine state cannot be read: " + e.getMessage()
@@ -122,10 +182,55 @@ public final class EngineCommand implements Callable<Integer> {
         }
     }
 
+    private int[] ids() {
+        return robotIds == null ? new int[] {process.robotId()} : RobotIds.parse(robotIds);
+    }
+
+    private String defaultName() {
+        String host;
+        try {
+            host = InetAddress.getLocalHost().getHostName();
+        } catch (UnknownHostException e) {
+            host = "engine";
+        }
+        return host + ":" + (robotIds == null ? String.valueOf(process.robotId()) : robotIds);
+    }
+
     private String problem() {
         String dbProblem = db.problem();
         if (dbProblem != null) {
             return dbProblem;
+        }
+        if (robotIds != null) {
+            if (spec.commandLine().getParseResult().hasMatchedOption("--robot-id")) {
+                return "give either --robot-id or --robot-ids, not both";
+            }
+            try {
+                RobotIds.parse(robotIds);
+            } catch (IllegalArgumentException e) {
+                return e.getMessage();
+            }
+        }
+        if (standbyIds != null) {
+            try {
+                int[] standby = RobotIds.parse(standbyIds);
+                for (int id : ids()) {
+                    if (java.util.Arrays.binarySearch(standby, id) >= 0) {
+                        return "robot " + id + " is in both the robots served and --standby-ids";
+                    }
+                }
+            } catch (IllegalArgumentException e) {
+                return e.getMessage().replace("--robot-ids", "--standby-ids");
+            }
+        }
+        if (threads < 0) {
+            return "--threads must be >= 0 (0: automatic): " + threads;
+        }
+        if (!(leaseS >= 0.5) || leaseS > 3600) {
+            return "--lease-s must be between 0.5 and 3600 seconds: " + leaseS;
+        }
+        if (engineName != null && (engineName.isBlank() || engineName.length() > 128)) {
+            return "--engine-name must be 1 to 128 characters: '" + engineName + "'";
         }
         if (!(maxSpeedMps > 0) || Double.isInfinite(maxSpeedMps)) {
             return "--max-speed-mps must be a positive number: " + maxSpeedMps;

@@ -4,6 +4,8 @@ import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
+import java.util.HashMap;
+import java.util.Map;
 import java.util.Optional;
 import javax.sql.DataSource;
 
@@ -67,6 +69,34 @@ public final class EngineClock {
                         rs.getString(5))) : Optional.empty();
             }
         }
+    }
+
+    /**
+     * The clocks of several robots in one query (an engine serving many robots polls them all at once).
+     *
+     * @param dataSource the shared database
+     * @param robotIds   the robots
+     * @return each robot's clock by robot id; a robot that never started a run is absent
+     */
+    public static Map<Integer, RobotTick> robots(DataSource dataSource, int[] robotIds) throws SQLException {
+        StringBuilder sql = new StringBuilder("SELECT robot_id, run_id, step, sim_time_ms, timing, state FROM robot_clock WHERE robot_id IN (");
+        for (int k = 0; k < robotIds.length; k++) {
+            sql.append(k == 0 ? "?" : ", ?");
+        }
+        sql.append(')');
+        Map<Integer, RobotTick> out = new HashMap<>();
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql.toString())) {
+            for (int k = 0; k < robotIds.length; k++) {
+                ps.setInt(k + 1, robotIds[k]);
+            }
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    out.put(rs.getInt(1), new RobotTick(rs.getLong(2), rs.getLong(3), rs.getLong(4), rs.getString(5),
+                            rs.getString(6)));
+                }
+            }
+        }
+        return out;
     }
 
     /** @return what this engine last published, or empty */

@@ -307,6 +307,7 @@ public final class RobotEngine {
         private DecisionObserver observer;
         private Set<String> only;
         private final List<IterationListener> listeners = new ArrayList<>();
+        private CommitGuard guard;
 
         private Builder() {
         }
@@ -377,6 +378,18 @@ public final class RobotEngine {
             return this;
         }
 
+        /**
+         * Over a database: a check run in every iteration's transaction before anything else
+         * of it is written; when it throws, the iteration rolls back (an engine that lost its
+         * robot's lease to another engine commits nothing).
+         *
+         * @param guard the check
+         */
+        public Builder guard(CommitGuard guard) {
+            this.guard = Objects.requireNonNull(guard);
+            return this;
+        }
+
         /** @param observer told of every decision (a trace), or null */
         public Builder observer(DecisionObserver observer) {
             this.observer = observer;
@@ -398,8 +411,13 @@ public final class RobotEngine {
             EngineTables base = tables;
             StateStore stateStore = store;
             StateCodec codec = new StateCodec(plugins.classLoader());
+            long[] iteration = {0}; // the guard is told the iteration about to commit
             if (dataSource != null) {
                 transaction = new IterationTransaction(dataSource);
+                if (guard != null) {
+                    CommitGuard check = guard;
+                    transaction.beforeCommit(c -> check.check(c, iteration[0]));
+                }
                 base = EngineTables.of(new JdbcRobotTables(transaction, robotId));
                 stateStore = new JdbcStateStore(transaction, codec);
             } else if (base == null) {
@@ -447,6 +465,14 @@ public final class RobotEngine {
             listeners.forEach(b::listener);
             if (stateStore == null) {
                 throw new IllegalStateException("give the engine a state store with its tables");
+            }
+            if (guard != null) {
+                b.listener(new IterationListener() {
+                    @Override
+                    public void iterationStarted(long n, int queued) {
+                        iteration[0] = n;
+                    }
+                });
             }
             return new RobotEngine(b.build(), wired, transaction, registry, List.copyOf(order), knownMap);
         }

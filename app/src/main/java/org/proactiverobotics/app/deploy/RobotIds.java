@@ -1,0 +1,47 @@
+package org.proactiverobotics.app.deploy;
+
+import java.util.TreeSet;
+
+/** The robots an engine process serves, as given on the command line: ids and ranges ({@code 1-100}, {@code 1,3,7-9}). */
+public final class RobotIds {
+
+    /** The most robots one engine process may be given. */
+    public static final int MAX = 10_000;
+
+    private RobotIds() {
+    }
+
+    /**
+     * @param spec ids and ranges separated by commas
+     * @return the ids, ascending, each once
+     * @throws IllegalArgumentException naming the part that is not an id or a range
+     */
+    public static int[] parse(String spec) {
+        TreeSet<Integer> ids = new TreeSet<>();
+        for (String raw : spec.split(",", -1)) {
+            String part = raw.strip();
+            int dash = part.indexOf('-', 1);
+            try {
+                int from = Integer.parseInt(dash < 0 ? part : part.substring(0, dash).strip());
+                int to = dash < 0 ? from : Integer.parseInt(part.substring(dash + 1).strip());
+                if (from < 0 || to < from) {
+                    throw new IllegalArgumentException(problem(spec, part));
+                }
+                if ((long) to - from + 1 + ids.size() > MAX) {
+                    throw new IllegalArgumentException("--robot-ids: more than " + MAX + " robots in '" + spec + "'");
+                }
+                for (int id = from; id <= to; id++) {
+                    ids.add(id);
+                }
+            } catch (NumberFormatException e) {
+                throw new IllegalArgumentException(problem(spec, part));
+            }
+        }
+        return ids.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private static String problem(String spec, String part) {
+        return "--robot-ids: '" + part + "' in '" + spec + "' is not a robot id (>= 0) or a range FROM-TO"
+                + " (e.g. 1-100 or 1,3,7-9)";
+    }
+}

@@ -1,0 +1,310 @@
+package org.proactiverobotics.app.deploy;
+
+import java.sql.SQLException;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.function.IntFunction;
+import org.proactiverobotics.app.deploy.EngineClock.RobotTick;
+import org.proactiverobotics.app.deploy.EngineClock.Served;
+import org.proactiverobotics.engine.CorruptStateException;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * What an engine process does for one robot, one turn at a time ({@link EngineLoop} turns many):
+ * holds the robot's lease, follows its clock, runs the engine's iterations for it.
+ *
+ * <ul>
+ *   <li>The robot is served only while this engine holds its lease ({@link EngineLease}); the
+ *       lease is tried every second until taken, renewed by every iteration and while idle,
+ *       and an engine that lost it stops serving the robot at once.</li>
+ *   <li>A new robot run (a new robot process) resets the engine's rows and starts the engine
+ *       fresh; the run the engine already served (the engine restarted, or another engine
+ *       served it before) resumes from the saved state. An iteration saved but not yet
+ *       published counts as served, so a kill between the two never runs a step twice.</li>
+ *   <li>Sync timing: exactly one iteration per robot step, then "served step k".</li>
+ *   <li>Real-time timing: one iteration every period, at a fixed rate, while the run goes on.</li>
+ *   <li>A database failure (or an iteration failing to save) is logged once and retried with
+ *       back-off; the engine resumes from its saved state when the database is back.</li>
+ * </ul>
+ * Not thread-safe: one thread turns it.
+ */
+public final class RobotServer {
+
+    private static final Logger LOG = LoggerFactory.getLogger(RobotServer.class);
+    private static final long STATUS_EVERY_NANOS = TimeUnit.SECONDS.toNanos(30);
+    private static final long TAKE_EVERY_NANOS = TimeUnit.SECONDS.toNanos(1);
+
+    private final int robotId;
+    private final IntFunction<RobotEngine> engines;
+    private final EngineClock clock;
+    private final EngineLease lease;
+    private final EngineLoop.Options options;
+    private final long renewEveryNanos;
+    /** A standby robot is taken only once this engine has run a lease's time (its own engine had the chance). */
+    private final long takeFromNanos;
+    private RobotEngine side;
+    private long runId = -1;
+    private long served;
+    private boolean firstContact = true;
+    private boolean finishedLogged;
+    private boolean waitingLogged;
+    private long nextStatusNanos;
+    private long nextTickNanos;
+    private long nextTakeNanos;
+    private long nextRenewNanos;
+    private long retryAtNanos;
+    private long iterationsSinceLog;
+    private long iterationNanosSinceLog;
+    private long failures;
+    private long backoffMs;
+    /** In real-time timing, how long until the next iteration is due (0: not waiting for a tick). */
+    private long realTimeWaitNanos;
+
+    /**
+     * @param robotId the robot
+     * @param engines builds the robot's engine the first time this engine takes its lease
+     * @param clock   the robot's handshake rows
+     * @param lease   the robot's lease row, as this engine holds it
+     * @param options how to run
+     * @param standby whether the robot is another engine's to serve first: taken only after a
+     *                lease's time, when no other engine has taken it (or its engine died)
+     */
+    public RobotServer(int robotId, IntFunction<RobotEngine> engines, EngineClock clock, EngineLease lease,
+                       EngineLoop.Options options, boolean standby) {
+        this.robotId = robotId;
+        this.engines = engines;
+        this.clock = clock;
+        this.lease = lease;
+        this.options = options;
+        this.renewEveryNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(1, options.leaseMs() / 3));
+        this.takeFromNanos = standby ? System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.leaseMs()) : System.nanoTime();
+    }
+
+    /** @return the robot */
+    public int robotId() {
+        return robotId;
+    }
+
+    /** @return whether this engine holds the robot's lease */
+    public boolean serving() {
+        return lease.held();
+    }
+
+    /** @return how long until a real-time iteration is due, ns (0: none is waited for) */
+    long realTimeWaitNanos() {
+        long w = realTimeWaitNanos;
+        realTimeWaitNanos = 0;
+        return w;
+    }
+
+    /**
+     * One look at the robot and at most one iteration for it; never throws for a database
+     * failure (that is logged and retried later).
+     *
+     * @param seen the robot's clock as read for this turn (null: the robot never started a run)
+     * @param now  System.nanoTime() of this turn
+     * @return whether an iteration ran
+     * @throws CorruptStateException when the saved state cannot be read (start with --fresh)
+     */
+    public boolean turn(RobotTick seen, long now) {
+        if (retryAtNanos != 0 && now - retryAtNanos < 0) {
+            return false;
+        }
+        try {
+            boolean worked = serve(seen, now);
+            if (backoffMs > 0) {
+                LOG.info("engine {}: database back after {} failed attempt(s)", robotId, failures);
+                backoffMs = 0;
+                failures = 0;
+            }
+            retryAtNanos = 0;
+            return worked;
+        } catch (CorruptStateException e) {
+            throw e; // never a silent fresh start: the command says which row and stops
+        } catch (SQLException | RuntimeException e) {
+            failed(e, now);
+            return false;
+        }
+    }
+
+    private boolean serve(RobotTick robot, long now) throws SQLException {
+        if (robot == null) {
+            if (now - nextStatusNanos >= 0) {
+                nextStatusNanos = now + STATUS_EVERY_NANOS;
+                LOG.info("engine {}: waiting for the robot (robot {} has not started a run)", robotId, robotId);
+            }
+            renewWhileIdle(now);
+            return false;
+        }
+        if (!lease.held()) {
+            if (now - nextTakeNanos < 0 || now - takeFromNanos < 0) {
+                return false;
+            }
+            nextTakeNanos = now + TAKE_EVERY_NANOS;
+            if (!lease.tryTake()) {
+                if (!waitingLogged) {
+                    waitingLogged = true;
+                    LOG.info("engine {}: robot {} is served by another engine; taking over if its lease expires",
+                            robotId, robotId);
+                }
+                return false;
+            }
+            waitingLogged = false;
+            LOG.info("engine {}: lease of robot {} taken (epoch {})", robotId, robotId, lease.epoch());
+            if (side == null) {
+                side = engines.apply(robotId);
+            }
+            runId = -1; // adopt the run anew: whatever another engine saved in between is the truth
+            nextRenewNanos = now + renewEveryNanos;
+        }
+        if (robot.runId() != runId) {
+            adopt(robot);
+        }
+        if (!robot.running()) {
+            if (!finishedLogged) {
+                finishedLogged = true;
+                LOG.info("engine {}: robot run {} {} at step {} ({} s simulated); nothing to serve until a new run",
+                        robotId, runId, robot.state().toLowerCase(Locale.ROOT), robot.step(), secs(robot.simTimeMs()));
+            }
+            renewWhileIdle(now);
+            return false;
+        }
+        if (robot.sync()) {
+            if (robot.step() <= served) {
+                renewWhileIdle(now);
+                return false;
+            }
+        } else {
+            if (now - nextTickNanos < 0) {
+                realTimeWaitNanos = nextTickNanos - now;
+                renewWhileIdle(now);
+                return false;
+            }
+            long period = TimeUnit.MILLISECONDS.toNanos(options.periodMs());
+            nextTickNanos = now - nextTickNanos > 10 * period ? now + period : nextTickNanos + period; // fixed rate, no long burst after a pause
+        }
+        long t0 = System.nanoTime();
+        side.iterate(); // the lease is confirmed in the iteration's own transaction
+        nextRenewNanos = t0 + renewEveryNanos;
+        long iteration = side.engine().iteration();
+        served = Math.max(served, robot.step());
+        clock.publish(runId, served, iteration);
+        iterationNanosSinceLog += System.nanoTime() - t0;
+        if (++iterationsSinceLog >= options.logEvery()) {
+            LOG.info("engine {}: iteration {} for robot step {} ({} s simulated, {} timing), {} ms per iteration",
+                    robotId, iteration, robot.step(), secs(robot.simTimeMs()), robot.timing(),
+                    String.format(Locale.ROOT, "%.2f", iterationNanosSinceLog / 1e6 / iterationsSinceLog));
+            iterationsSinceLog = 0;
+            iterationNanosSinceLog = 0;
+        }
+        return true;
+    }
+
+    private void renewWhileIdle(long now) throws SQLException {
+        if (lease.held() && now - nextRenewNanos >= 0) {
+            nextRenewNanos = now + renewEveryNanos;
+            if (!lease.renew()) {
+                lost();
+            }
+        }
+    }
+
+    private void lost() {
+        LOG.warn("engine {}: robot {} lost to another engine (its lease was taken); no longer serving it", robotId, robotId);
+        runId = -1;
+    }
+
+    /** Takes up the robot's run: resumes it when it was served before, else starts it fresh. */
+    private void adopt(RobotTick robot) throws SQLException {
+        java.util.Optional<Served> last = clock.served();
+        boolean sameRun = last.isPresent() && last.get().runId() == robot.runId();
+        if (sameRun && (!firstContact || !options.fresh())) {
+            boolean resumed = side.resume();
+            long iteration = side.engine().iteration();
+            // An iteration saved but not yet published (killed in between) served the next step.
+            served = last.get().step() + Math.max(0, iteration - last.get().iteration());
+            if (iteration != last.get().iteration()) {
+                clock.publish(robot.runId(), served, iteration);
+            }
+            LOG.info("engine {}: {} robot run {} at step {} (iteration {})", robotId,
+                    resumed ? "resuming" : "no saved state; starting afresh in", robot.runId(), served, iteration);
+        } else if (sameRun) {
+            side.startFresh();
+            served = last.get().step();
+            clock.publish(robot.runId(), served, side.engine().iteration());
+            LOG.info("engine {}: --fresh: saved state discarded; serving robot run {} from step {}", robotId,
+                    robot.runId(), served + 1);
+        } else {
+            clock.resetForNewRun();
+            side.startFresh();
+            served = 0;
+            clock.publish(robot.runId(), 0, 0);
+            LOG.info("engine {}: new robot run {} ({} timing): commands and requests of earlier runs cleared, "
+                    + "checkpoints not reached, engine started fresh", robotId, robot.runId(), robot.timing());
+        }
+        if (side.ensureStrategy(options.strategy())) { // a strategy set with the strategy command survives restarts
+            LOG.info("engine {}: strategy {} written", robotId, options.strategy().name());
+        }
+        runId = robot.runId();
+        firstContact = false;
+        finishedLogged = false;
+        nextTickNanos = System.nanoTime();
+    }
+
+    private void failed(Exception e, long now) {
+        boolean wasServing = runId != -1;
+        runId = -1; // resume from what was saved once the database answers again
+        firstContact = false;
+        if (e instanceof EngineLease.LostException || (e.getCause() instanceof EngineLease.LostException)) {
+            lease.forget();
+            if (wasServing) {
+                lost();
+            }
+            return;
+        }
+        failures++;
+        backoffMs = backoffMs == 0 ? 100 : Math.min(5_000, backoffMs * 2);
+        retryAtNanos = now + TimeUnit.MILLISECONDS.toNanos(backoffMs);
+        if (failures == 1) {
+            LOG.warn("engine {}: database failure ({}); retrying with back-off, then resuming from the saved state",
+                    robotId, oneLine(e));
+        } else {
+            LOG.debug("engine {}: still failing ({})", robotId, oneLine(e));
+        }
+        // the lease is kept: the next iteration's confirmation tells whether another engine took it meanwhile
+    }
+
+    /** The database failed before this robot's turn: its run is taken up again from the saved state. */
+    void databaseFailed() {
+        runId = -1;
+        firstContact = false;
+    }
+
+    /** Gives the robot up at a clean stop: its state is saved, its lease released for another engine. */
+    public void stop() {
+        if (side != null && lease.held()) {
+            LOG.info("engine {}: stopped after iteration {} (state saved)", robotId, side.engine().iteration());
+        }
+        try {
+            lease.release();
+        } catch (SQLException | RuntimeException e) {
+            LOG.debug("engine {}: releasing the lease failed ({}); it expires by itself", robotId, oneLine(e));
+        }
+    }
+
+    private static String secs(long ms) {
+        return String.format(Locale.ROOT, "%.1f", ms / 1000.0);
+    }
+
+    static String oneLine(Throwable e) {
+        String m = e.getMessage() == null ? e.toString() : e.getMessage();
+        Throwable cause = e.getCause();
+        if (cause != null && cause.getMessage() != null && !m.contains(cause.getMessage())) {
+            m = m + ": " + cause.getMessage();
+        }
+        int nl = m.indexOf('\n');
+        return nl < 0 ? m : m.substring(0, nl);
+    }
+}
