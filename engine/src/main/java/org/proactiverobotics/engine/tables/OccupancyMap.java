@@ -7,8 +7,14 @@ import java.util.Set;
 
 /**
  * A sparse occupancy grid in chunks, as stored in {@code occupancy_map}: cells of
- * {@value #CELL_M} m, each unknown, free or occupied; a cell never seen is unknown. Remembers
- * which chunks changed since they were last taken ({@link #takeChanged()}). Not thread-safe.
+ * {@value #CELL_M} m, each unknown, free or occupied; a cell never seen is unknown. A seen cell
+ * keeps its evidence in its byte (log-odds in whole steps): a ray ending on it adds
+ * {@value #HIT}, a ray passing through it takes {@value #MISS} away until the cell has been hit
+ * twice ({@value #CONFIRMED}: a wall, for good), and it is occupied while any evidence is left
+ * (stored byte {@value #OCCUPIED} and above; {@value #FREE}: seen, no evidence). A single noisy
+ * reading that drew a wall across a doorway is taken away again by the rays that later pass
+ * through it; a wall seen twice, or once from close by ({@link #confirm}), stays. Remembers which chunks changed
+ * since they were last taken ({@link #takeChanged()}). Not thread-safe.
  */
 public final class OccupancyMap {
 
@@ -23,8 +29,14 @@ public final class OccupancyMap {
     public static final byte UNKNOWN = 0;
     /** A ray crossed it. */
     public static final byte FREE = 1;
-    /** A ray ended on it. */
+    /** A ray ended on it (and its evidence is not used up). */
     public static final byte OCCUPIED = 2;
+    /** Evidence a ray ending on a cell adds. */
+    public static final int HIT = 3;
+    /** Evidence a ray passing through a cell takes away. */
+    public static final int MISS = 1;
+    /** Evidence from which a cell is a wall for good: passing rays no longer take it away (two hits). */
+    public static final int CONFIRMED = 2 * HIT;
 
     // Chunks in a dense row-major array over a rectangle of chunk indices that grows as the map
     // does: a lookup is an index, not a hash (Long keys hash to cx ^ cy, which collides along diagonals).
@@ -142,7 +154,7 @@ public final class OccupancyMap {
                 int cx = originCx + a;
                 int cy = originCy + b;
                 for (int q = 0; q < c.length; q++) {
-                    if (c[q] == OCCUPIED) {
+                    if (c[q] >= OCCUPIED) {
                         visitor.cell(cx * CHUNK_CELLS + q % CHUNK_CELLS, cy * CHUNK_CELLS + q / CHUNK_CELLS);
                     }
                 }
@@ -153,15 +165,64 @@ public final class OccupancyMap {
     /** @return the state of a cell (column i, row j) */
     public byte get(int i, int j) {
         byte[] c = chunk(i >> CHUNK_SHIFT, j >> CHUNK_SHIFT);
-        return c == null ? UNKNOWN : c[(j & CHUNK_MASK) * CHUNK_CELLS + (i & CHUNK_MASK)];
+        if (c == null) {
+            return UNKNOWN;
+        }
+        byte raw = c[(j & CHUNK_MASK) * CHUNK_CELLS + (i & CHUNK_MASK)];
+        return raw >= OCCUPIED ? OCCUPIED : raw;
+    }
+
+    /** @return a cell's evidence of being occupied (0 for free or unknown) */
+    public int evidence(int i, int j) {
+        byte[] c = chunk(i >> CHUNK_SHIFT, j >> CHUNK_SHIFT);
+        return c == null ? 0 : Math.max(0, c[(j & CHUNK_MASK) * CHUNK_CELLS + (i & CHUNK_MASK)] - FREE);
     }
 
     /**
-     * Sets a cell; its chunk is marked changed when the state changes.
+     * A ray ended on a cell: adds {@value #HIT} to its evidence.
+     *
+     * @return whether the cell's byte changed
+     */
+    public boolean hit(int i, int j) {
+        int e = Math.min(CONFIRMED, evidence(i, j) + HIT);
+        return setRaw(i, j, (byte) (FREE + e));
+    }
+
+    /**
+     * A ray ended on a cell from close by, where readings do not stray: a wall for good.
+     *
+     * @return whether the cell's byte changed
+     */
+    public boolean confirm(int i, int j) {
+        return setRaw(i, j, (byte) (FREE + CONFIRMED));
+    }
+
+    /**
+     * A ray passed through a cell: it is seen, and loses {@value #MISS} of its evidence unless it is
+     * a confirmed wall.
+     *
+     * @return whether the cell's byte changed
+     */
+    public boolean miss(int i, int j) {
+        int e = evidence(i, j);
+        if (e >= CONFIRMED) {
+            return false;
+        }
+        e = Math.max(0, e - MISS);
+        return setRaw(i, j, (byte) (FREE + e));
+    }
+
+    /**
+     * Sets a cell's state ({@link #OCCUPIED}: the evidence of one hit short of a wall seen once,
+     * i.e. the least evidence); its chunk is marked changed when the byte changes.
      *
      * @return whether the state changed
      */
     public boolean set(int i, int j, byte state) {
+        return setRaw(i, j, state);
+    }
+
+    private boolean setRaw(int i, int j, byte state) {
         int cx = Math.floorDiv(i, CHUNK_CELLS);
         int cy = Math.floorDiv(j, CHUNK_CELLS);
         long k = key(cx, cy);
@@ -287,7 +348,7 @@ public final class OccupancyMap {
                 continue;
             }
             for (byte b : c) {
-                if (b == OCCUPIED) {
+                if (b >= OCCUPIED) {
                     n++;
                 }
             }

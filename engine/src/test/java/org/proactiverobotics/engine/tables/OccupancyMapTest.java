@@ -60,4 +60,34 @@ class OccupancyMapTest {
                 .isInstanceOf(IllegalStateException.class).hasMessageContaining("too far away");
         assertThat(map.get(0, 0)).isEqualTo(OccupancyMap.OCCUPIED);
     }
+
+    @Test
+    void aWallSeenOnceIsClearedByTheRaysThatPassThroughItOneSeenTwiceOrFromCloseByStays() {
+        OccupancyMap map = OccupancyMap.empty();
+        map.hit(0, 0); // a noisy reading drew a wall here
+        assertThat(map.get(0, 0)).isEqualTo(OccupancyMap.OCCUPIED);
+        for (int n = 1; n < OccupancyMap.HIT / OccupancyMap.MISS; n++) {
+            map.miss(0, 0);
+            assertThat(map.get(0, 0)).as("after %d rays through it", n).isEqualTo(OccupancyMap.OCCUPIED);
+        }
+        map.miss(0, 0);
+        assertThat(map.get(0, 0)).as("every passing ray took some evidence away").isEqualTo(OccupancyMap.FREE);
+
+        map.hit(5, 5);
+        map.hit(5, 5); // seen twice: a wall
+        assertThat(map.evidence(5, 5)).isEqualTo(OccupancyMap.CONFIRMED);
+        for (int n = 0; n < 100; n++) {
+            map.miss(5, 5); // rays grazing it
+        }
+        assertThat(map.get(5, 5)).isEqualTo(OccupancyMap.OCCUPIED);
+
+        map.confirm(9, 9); // hit from close by
+        map.miss(9, 9);
+        assertThat(map.get(9, 9)).isEqualTo(OccupancyMap.OCCUPIED);
+
+        map.hit(1, 1);
+        List<String> all = new ArrayList<>();
+        map.forEachOccupied((i, j) -> all.add(i + "," + j));
+        assertThat(all).containsExactlyInAnyOrder("1,1", "5,5", "9,9");
+    }
 }

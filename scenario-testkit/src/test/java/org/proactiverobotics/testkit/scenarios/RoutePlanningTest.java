@@ -65,8 +65,11 @@ class RoutePlanningTest {
             store(kit, map);
             kit.mission().checkpoint(2, 2);
             kit.robot().gps(0, 0).headingDeg(0);
-            kit.step(2 + 3 * 16);
+            kit.step(2 + 32); // a second without a route: the robot waits, scanning (a noisy reading may have drawn the wall)
             JdbcRobotTables tables = new JdbcRobotTables(kit.database(), ScenarioKit.ROBOT_ID);
+            assertThat(tables.checkpoints()).extracting(Checkpoint::unreachable).containsExactly(false);
+            assertThat(kit.suggestion(DESTINATION)).isEqualTo("STOP");
+            kit.step(3 * 32); // three seconds without a route: unreachable
             assertThat(tables.checkpoints()).extracting(Checkpoint::unreachable).containsExactly(true);
             kit.step(2);
             assertThat(kit.suggestion(DESTINATION)).isEqualTo("STOP");

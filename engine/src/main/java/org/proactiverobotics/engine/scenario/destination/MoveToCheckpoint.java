@@ -18,15 +18,17 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * checkpoint is reached; then marks it reached and generates GetCheckpoint. It follows a route
  * planned on the occupancy map known so far (unknown cells free) and re-planned as scans reveal
  * walls ({@link RouteFollower}): straight at the checkpoint while the map shows the way clear, else
- * at the farthest waypoint in sight. When {@value #NO_ROUTE_PLANS} plans in a row find no route
- * at all, it marks the checkpoint unreachable and generates GetCheckpoint (which then stops the robot).
+ * at the farthest waypoint in sight. When the planner has found no route at all for
+ * {@value #NO_ROUTE_MS} ms of simulated time (the robot stopped, scanning: a wall a noisy reading
+ * drew across a doorway is cleared by the rays that pass through it), it marks the checkpoint
+ * unreachable and generates GetCheckpoint (which then stops the robot).
  */
 public final class MoveToCheckpoint extends Rule {
 
     /** Counts as reached a little inside the checkpoint's radius, so the simulator agrees. */
     static final double REACHED_FRACTION = 0.8;
-    /** Plans in a row without a route before the checkpoint is declared unreachable. */
-    static final int NO_ROUTE_PLANS = 3;
+    /** How long no plan finds a route before the checkpoint is declared unreachable, simulated ms. */
+    static final long NO_ROUTE_MS = 3_000;
 
     private int seq;
     private double xM;
@@ -34,6 +36,8 @@ public final class MoveToCheckpoint extends Rule {
     private double radiusM;
     /** The route and its re-planning (saved with the rule). */
     private RouteFollower route = new RouteFollower();
+    /** The simulated time since which no plan has found a route, ms (-1: the last plan found one). */
+    private long noRouteSinceMs = -1;
 
     private transient GpsFix position;
     private transient Heading heading;
@@ -95,13 +99,17 @@ public final class MoveToCheckpoint extends Rule {
         RouteFollower.Status status = route.step(map, position.xM(), position.yM(), xM, yM,
                 radiusM * REACHED_FRACTION * 0.9, profile.axleWidthM() / 2);
         if (status == RouteFollower.Status.NO_ROUTE) {
-            if (route.plansWithoutRoute() >= NO_ROUTE_PLANS) {
+            if (noRouteSinceMs < 0) {
+                noRouteSinceMs = position.simTimeMs();
+            }
+            if (position.simTimeMs() - noRouteSinceMs >= NO_ROUTE_MS) {
                 unreachable = true;
                 ctx.service(MissionTables.class).markUnreachable(seq, position.simTimeMs());
             }
             ctx.suggest(Steering.STOP);
             return;
         }
+        noRouteSinceMs = -1;
         ctx.suggest(Steering.goTo(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), profile));
     }
 

@@ -14,8 +14,9 @@ import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
- * Adds each new distance scan to the map: along every ray, the cells it crossed become free and
- * the cell where it hit (a reading shorter than {@value #FREE_MARGIN} of the range below it) occupied. The scan is placed at the
+ * Adds each new distance scan to the map: along every ray, the cells it crossed lose evidence of
+ * a wall (unknown ones become free) and the cell where it hit (a reading shorter than
+ * {@value #FREE_MARGIN} of the range below it) gains some ({@link OccupancyMap#hit}). The scan is placed at the
  * GPS and inertial-unit readings of the same moment (within {@value #SAME_MOMENT_MS} ms); a scan
  * without them is skipped. Every chunk a scan changed is written in the same iteration (its
  * transaction), so the stored map is always the one the engine's last committed iteration knew:
@@ -31,6 +32,11 @@ public final class UpdateMap extends Rule {
      * walls round the robot (every checkpoint unreachable within two seconds under --noise small).
      */
     static final double FREE_MARGIN = 0.1;
+    /**
+     * A hit this close, as a share of the range, confirms its cell at once: the robot is next to the
+     * wall (the collision reflex sees it too), and a route planned through it would never be driven.
+     */
+    static final double CLOSE_HIT = 0.3;
     /** Readings this close in simulated time are taken as one moment, ms. */
     static final long SAME_MOMENT_MS = 40;
 
@@ -116,12 +122,12 @@ public final class UpdateMap extends Rule {
             double reach = radiusM + Math.min(d, scan.rangeM());
             double ex = xM + Math.cos(a) * reach;
             double ey = yM + Math.sin(a) * reach;
-            traverse(map, xM, yM, ex, ey, hit);
+            traverse(map, xM, yM, ex, ey, hit, hit && d < scan.rangeM() * CLOSE_HIT);
         }
     }
 
     /** Walks the cells from (x0, y0) to (x1, y1) (Amanatides-Woo): free on the way, the last occupied on a hit. */
-    private static void traverse(OccupancyMap map, double x0, double y0, double x1, double y1, boolean hit) {
+    private static void traverse(OccupancyMap map, double x0, double y0, double x1, double y1, boolean hit, boolean close) {
         int i = OccupancyMap.cell(x0);
         int j = OccupancyMap.cell(y0);
         int ei = OccupancyMap.cell(x1);
@@ -137,9 +143,7 @@ public final class UpdateMap extends Rule {
         double nextY = dy == 0 ? Double.POSITIVE_INFINITY : ((sj > 0 ? (j + 1) * c : j * c) - y0) / dy;
         int guard = Math.abs(ei - i) + Math.abs(ej - j) + 2;
         while ((i != ei || j != ej) && guard-- > 0) {
-            if (map.get(i, j) == OccupancyMap.UNKNOWN) {
-                map.set(i, j, OccupancyMap.FREE); // occupied cells stay occupied: the world is static
-            }
+            map.miss(i, j); // seen free; a wall drawn here by a noisy reading loses its evidence
             if (nextX < nextY) {
                 nextX += tdx;
                 i += si;
@@ -148,10 +152,12 @@ public final class UpdateMap extends Rule {
                 j += sj;
             }
         }
-        if (hit) {
-            map.set(ei, ej, OccupancyMap.OCCUPIED);
-        } else if (map.get(ei, ej) == OccupancyMap.UNKNOWN) {
-            map.set(ei, ej, OccupancyMap.FREE);
+        if (close) {
+            map.confirm(ei, ej);
+        } else if (hit) {
+            map.hit(ei, ej);
+        } else {
+            map.miss(ei, ej);
         }
     }
 }
