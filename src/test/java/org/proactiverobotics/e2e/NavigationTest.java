@@ -113,4 +113,34 @@ class NavigationTest {
         // a noisy fix at the station's edge does not break one stop into several charging sessions
         assertThat(run.report().recharges()).isLessThanOrEqualTo(Missions.direct(world, "safety-first").report().recharges());
     }
+
+    /**
+     * A door a noisy reading drew shut opens again: the map keeps evidence per cell, and the rays
+     * that pass through the door later take a wall seen once away (before, this world ended
+     * CHECKPOINT_UNREACHABLE at 36 s under small noise).
+     */
+    @Test
+    void aDoorwayANoisyReadingClosedOpensAgain() {
+        WorldSpec world = new WorldGenerator(WorldGenerator.Kind.CORRIDORS).world(17, 3);
+        Missions.Run run = Missions.direct(world, "safety-first", org.proactiverobotics.app.mission.NoiseLevel.SMALL);
+        assertThat(run.report().outcome()).as("see %s", run.outDir()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
+        assertThat(run.report().collisions()).isZero();
+    }
+
+    /**
+     * Larger robots (0.2 m and 0.3 m radius, generated with a scanner's fan of rays) among pillars,
+     * in rooms and in clutter, with small noise: accomplished, never touching anything (with the
+     * default eight rays a 0.3 m robot met a thin pillar straight ahead, between its ±8° rays).
+     */
+    @ParameterizedTest(name = "{0} number {2}, radius {1} m, small noise")
+    @CsvSource({"pillars, 0.3, 6", "pillars, 0.3, 9", "pillars, 0.2, 4", "rooms, 0.3, 2", "cluttered, 0.3, 5"})
+    void largerRobotsAreAccomplishedWithoutTouchingAnything(String kind, double radiusM, int number) {
+        WorldSpec world = new WorldGenerator(WorldGenerator.Kind.valueOf(kind.toUpperCase(java.util.Locale.ROOT)), radiusM)
+                .world(17, number);
+        assertThat(world.robot().sensorAnglesDeg()).hasSize(21).contains(0.0, -5.0, 5.0);
+        Missions.Run run = Missions.direct(world, "safety-first", org.proactiverobotics.app.mission.NoiseLevel.SMALL);
+        assertThat(run.report().outcome()).as("see %s", run.outDir()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
+        assertThat(run.report().collisions()).isZero();
+        assertThat(run.report().minBattery()).isPositive();
+    }
 }

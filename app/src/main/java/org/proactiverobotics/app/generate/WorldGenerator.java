@@ -97,9 +97,25 @@ public final class WorldGenerator {
         throw new IllegalStateException("no solvable " + kind.label() + " world in " + MAX_DRAWS + " draws");
     }
 
+    /**
+     * The distance sensors of a robot of this size: the default eight for the default robot; a
+     * wider one gets a scanner's fan (every 5° across ±30°, every 15° out to ±90°), since 16° between
+     * the front rays leave a thin pillar straight ahead of a 0.3 m body unseen until it touches.
+     */
+    static List<Double> sensorAnglesDeg(double robotRadiusM) {
+        if (robotRadiusM <= WorldSpec.Robot.DEFAULT_RADIUS_M) {
+            return WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG;
+        }
+        List<Double> angles = new ArrayList<>();
+        for (double a = -90; a <= 90; a += a < -30 || a >= 30 ? 15 : 5) {
+            angles.add(a);
+        }
+        return angles;
+    }
+
     private WorldSpec draw(String name, SplittableRandom random) {
         WorldSpec.Robot robot = new WorldSpec.Robot(0.0, -4.2, 90.0, robotRadiusM,
-                WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M);
+                WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M, sensorAnglesDeg(robotRadiusM));
         List<Obstacle> obstacles = new ArrayList<>();
         List<WorldSpec.Checkpoint> checkpoints = new ArrayList<>();
         WorldSpec.RechargeStation station = new WorldSpec.RechargeStation(round(random.nextDouble(-3.2, -2.2)),
@@ -112,12 +128,14 @@ public final class WorldGenerator {
             case PILLARS -> pillars(random, checkpoints, obstacles, 2 * robotRadiusM);
             case ROOMS -> {
                 double[] start = rooms(random, checkpoints, obstacles, 2 * robotRadiusM);
-                robot = new WorldSpec.Robot(start[0], start[1], 90.0, robot.radiusM(), robot.maxSpeedMps(), robot.sensorRangeM());
+                robot = new WorldSpec.Robot(start[0], start[1], 90.0, robot.radiusM(), robot.maxSpeedMps(), robot.sensorRangeM(),
+                        robot.sensorAnglesDeg());
                 station = new WorldSpec.RechargeStation(start[2], start[3], 0.35);
             }
             case MAZE -> {
                 double[] start = maze(random, checkpoints, obstacles, 2 * robotRadiusM);
-                robot = new WorldSpec.Robot(start[0], start[1], 90.0, robot.radiusM(), robot.maxSpeedMps(), robot.sensorRangeM());
+                robot = new WorldSpec.Robot(start[0], start[1], 90.0, robot.radiusM(), robot.maxSpeedMps(), robot.sensorRangeM(),
+                        robot.sensorAnglesDeg());
                 station = new WorldSpec.RechargeStation(start[2], start[3], 0.35);
             }
             case BATTERY -> {
