@@ -80,8 +80,8 @@ public final class EngineCommand implements Callable<Integer> {
     private String robotIds;
 
     @Option(names = "--standby-ids", paramLabel = "LIST",
-            description = "Robots this engine takes over only when no other engine serves them (their engine died"
-                    + " or never started) for --lease-s: the other engines' robots, for fail-over.")
+            description = "Robots this engine takes over only when no other engine serves them once they have run"
+                    + " for --lease-s (their engine died, or never came): the other engines' robots, for fail-over.")
     private String standbyIds;
 
     @Option(names = "--threads", paramLabel = "N", defaultValue = "0",

@@ -42,8 +42,11 @@ public final class RobotServer {
     private final EngineLease lease;
     private final EngineLoop.Options options;
     private final long renewEveryNanos;
-    /** A standby robot is taken only once this engine has run a lease's time (its own engine had the chance). */
-    private final long takeFromNanos;
+    /** A standby robot is taken only once it has been running a lease's time (its own engine had the chance to take it). */
+    private final boolean standby;
+    private final long leaseNanos;
+    /** When this engine first saw the robot's clock, System.nanoTime() (0: not yet). */
+    private long firstSeenNanos;
     private RobotEngine side;
     private long runId = -1;
     private long served;
@@ -68,8 +71,9 @@ public final class RobotServer {
      * @param clock   the robot's handshake rows
      * @param lease   the robot's lease row, as this engine holds it
      * @param options how to run
-     * @param standby whether the robot is another engine's to serve first: taken only after a
-     *                lease's time, when no other engine has taken it (or its engine died)
+     * @param standby whether the robot is another engine's to serve first: tried only once this
+     *                engine has seen the robot running for a lease's time, and then taken only when
+     *                no other engine holds it (its engine died, or never came)
      */
     public RobotServer(int robotId, IntFunction<RobotEngine> engines, EngineClock clock, EngineLease lease,
                        EngineLoop.Options options, boolean standby) {
@@ -79,7 +83,8 @@ public final class RobotServer {
         this.lease = lease;
         this.options = options;
         this.renewEveryNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(1, options.leaseMs() / 3));
-        this.takeFromNanos = standby ? System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(options.leaseMs()) : System.nanoTime();
+        this.standby = standby;
+        this.leaseNanos = TimeUnit.MILLISECONDS.toNanos(options.leaseMs());
     }
 
     /** @return the robot */
@@ -138,8 +143,11 @@ public final class RobotServer {
             renewWhileIdle(now);
             return false;
         }
+        if (firstSeenNanos == 0) {
+            firstSeenNanos = now;
+        }
         if (!lease.held()) {
-            if (now - nextTakeNanos < 0 || now - takeFromNanos < 0) {
+            if (now - nextTakeNanos < 0 || standby && now - firstSeenNanos < leaseNanos) {
                 return false;
             }
             nextTakeNanos = now + TAKE_EVERY_NANOS;
