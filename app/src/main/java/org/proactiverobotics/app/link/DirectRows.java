@@ -144,9 +144,9 @@ final class DirectRows {
         return wrote;
     }
 
-    /** The robot's retention: readings and answered requests beyond the newest n; rows deleted. */
+    /** The robot's retention: readings beyond the newest n; rows deleted (answered requests are the engine's to prune, as over JDBC). */
     synchronized int pruneReadings(int keep) {
-        int deleted = trim(gps, keep) + trim(iu, keep) + trim(battery, keep) + trim(answered, keep);
+        int deleted = trim(gps, keep) + trim(iu, keep) + trim(battery, keep);
         while (scans.size() > keep) {
             deleted += scans.pollFirst().anglesRad().length; // one row per sensor, as in the table
         }
