@@ -6,6 +6,7 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
+import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.robot.link.LinkException;
 import org.proactiverobotics.robot.link.RobotClock;
 import org.proactiverobotics.robot.link.RobotClock.EngineTick;

@@ -2,6 +2,7 @@ package org.proactiverobotics.robot;
 
 import java.util.Objects;
 import java.util.concurrent.locks.LockSupport;
+import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.robot.link.LinkException;
 import org.proactiverobotics.robot.link.RobotLink;
 import org.proactiverobotics.sim2d.SimRobot;

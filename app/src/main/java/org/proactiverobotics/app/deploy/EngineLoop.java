@@ -10,6 +10,7 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.deploy.EngineClock.RobotTick;
+import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.engine.CorruptStateException;
 import org.proactiverobotics.engine.robot.Strategy;
 import org.slf4j.Logger;
@@ -99,7 +100,7 @@ public final class EngineLoop {
                          AtomicReference<RuntimeException> fatal) {
         int[] ids = share.stream().mapToInt(RobotServer::robotId).toArray();
         long idlePolls = 0;
-        long backoffMs = 0;
+        Backoff backoff = new Backoff(100, 5_000, System::nanoTime);
         long failures = 0;
         while (!done.getAsBoolean()) {
             if (beat != null) {
@@ -111,17 +112,17 @@ public final class EngineLoop {
                 if (failures > 0) {
                     LOG.info("engine: database back after {} failed attempt(s)", failures);
                     failures = 0;
-                    backoffMs = 0;
                 }
+                backoff.succeeded();
             } catch (SQLException | RuntimeException e) {
                 // the database is away for every robot of this thread: each resumes from its saved state afterwards
                 share.forEach(RobotServer::databaseFailed);
-                backoffMs = backoffMs == 0 ? 100 : Math.min(5_000, backoffMs * 2);
+                backoff.failed();
                 if (++failures == 1) {
                     LOG.warn("engine: database failure ({}); retrying with back-off, then resuming from the saved state",
                             RobotServer.oneLine(e));
                 }
-                pause(TimeUnit.MILLISECONDS.toNanos(backoffMs), done);
+                pause(TimeUnit.MILLISECONDS.toNanos(backoff.delayMs()), done);
                 continue;
             }
             boolean worked = false;

@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.IntFunction;
 import org.proactiverobotics.app.deploy.EngineClock.RobotTick;
 import org.proactiverobotics.app.deploy.EngineClock.Served;
+import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.engine.CorruptStateException;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.slf4j.Logger;
@@ -57,11 +58,10 @@ public final class RobotServer {
     private long nextTickNanos;
     private long nextTakeNanos;
     private long nextRenewNanos;
-    private long retryAtNanos;
     private long iterationsSinceLog;
     private long iterationNanosSinceLog;
     private long failures;
-    private long backoffMs;
+    private final Backoff backoff = new Backoff(100, 5_000, System::nanoTime);
     /** In real-time timing, how long until the next iteration is due (0: not waiting for a tick). */
     private long realTimeWaitNanos;
 
@@ -114,22 +114,21 @@ public final class RobotServer {
      * @throws CorruptStateException when the saved state cannot be read (start with --fresh)
      */
     public boolean turn(RobotTick seen, long now) {
-        if (retryAtNanos != 0 && now - retryAtNanos < 0) {
+        if (!backoff.ready()) {
             return false;
         }
         try {
             boolean worked = serve(seen, now);
-            if (backoffMs > 0) {
+            if (backoff.failing()) {
                 LOG.info("engine {}: database back after {} failed attempt(s)", robotId, failures);
-                backoffMs = 0;
                 failures = 0;
             }
-            retryAtNanos = 0;
+            backoff.succeeded();
             return worked;
         } catch (CorruptStateException e) {
             throw e; // never a silent fresh start: the command says which row and stops
         } catch (SQLException | RuntimeException e) {
-            failed(e, now);
+            failed(e);
             return false;
         }
     }
@@ -261,7 +260,7 @@ public final class RobotServer {
         nextTickNanos = System.nanoTime();
     }
 
-    private void failed(Exception e, long now) {
+    private void failed(Exception e) {
         boolean wasServing = runId != -1;
         runId = -1; // resume from what was saved once the database answers again
         firstContact = false;
@@ -273,8 +272,7 @@ public final class RobotServer {
             return;
         }
         failures++;
-        backoffMs = backoffMs == 0 ? 100 : Math.min(5_000, backoffMs * 2);
-        retryAtNanos = now + TimeUnit.MILLISECONDS.toNanos(backoffMs);
+        backoff.failed();
         if (failures == 1) {
             LOG.warn("engine {}: database failure ({}); retrying with back-off, then resuming from the saved state",
                     robotId, oneLine(e));

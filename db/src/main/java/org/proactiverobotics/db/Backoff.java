@@ -1,11 +1,12 @@
-package org.proactiverobotics.robot;
+package org.proactiverobotics.db;
 
 import java.util.function.LongSupplier;
 
 /**
  * Exponential back-off between database attempts, in wall-clock time (it spares a real server,
  * not simulated time): after a failure, no attempt until the delay elapses; the delay doubles
- * with each further failure up to a ceiling and resets on success.
+ * with each further failure up to a ceiling and resets on success. The one back-off of both
+ * sides: the robot's calls, its lockstep wait, the engine's loop and each robot it serves.
  */
 public final class Backoff {
 
