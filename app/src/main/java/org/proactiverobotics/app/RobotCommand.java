@@ -16,7 +16,6 @@ import org.proactiverobotics.app.deploy.StoredMission;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.mission.MissionReport;
-import org.proactiverobotics.app.mission.NoiseLevel;
 import org.proactiverobotics.robot.Lockstep;
 import org.proactiverobotics.sim2d.WorldSpec;
 import picocli.CommandLine.Command;
@@ -63,10 +62,8 @@ public final class RobotCommand implements Callable<Integer> {
             description = "Realtime timing: simulated seconds per wall second (2 = twice as fast). Default: ${DEFAULT-VALUE}.")
     private double realTimeFactor;
 
-    @Option(names = "--noise", paramLabel = "LEVEL", defaultValue = "none",
-            description = "Seeded sensor noise on GPS, inertial unit and distance sensors, drawn from the world's seed:"
-                    + " none, small or realistic. Default: ${DEFAULT-VALUE} (the world file alone).")
-    private String noise;
+    @Mixin
+    private NoiseOption noise;
 
 
 
@@ -115,7 +112,7 @@ public final class RobotCommand implements Callable<Integer> {
         stdout.flush();
         MissionReport report;
         RobotProcess robot = new RobotProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor,
-                process.logEvery(), process.heartbeat(), NoiseLevel.of(noise).sensorNoise()), signal);
+                process.logEvery(), process.heartbeat(), noise.level().sensorNoise()), signal);
         try {
             report = robot.run();
         } catch (DatabaseWait.Unreachable e) {
@@ -156,8 +153,8 @@ public final class RobotCommand implements Callable<Integer> {
         if (!timing.equals("sync") && !timing.equals("realtime")) {
             return "--timing must be sync or realtime: " + timing;
         }
-        if (!NoiseLevel.labels().contains(noise)) {
-            return "--noise: unknown noise level " + noise + "; levels: " + String.join(", ", NoiseLevel.labels());
+        if (noise.problem() != null) {
+            return noise.problem();
         }
         if (!(realTimeFactor > 0) || Double.isInfinite(realTimeFactor)) {
             return "--real-time-factor must be a positive number: " + realTimeFactor;

@@ -87,10 +87,8 @@ public final class RunCommand implements Callable<Integer> {
                     + " in --db are deleted). Default: ${DEFAULT-VALUE}.")
     private int robotId;
 
-    @Option(names = "--noise", paramLabel = "LEVEL", defaultValue = "none",
-            description = "Seeded sensor noise on GPS, inertial unit and distance sensors, drawn from the world's seed:"
-                    + " none, small or realistic. Default: ${DEFAULT-VALUE} (the world file alone).")
-    private String noise;
+    @Mixin
+    private NoiseOption noise;
 
     @Option(names = "--quiet", description = "No live progress line.")
     private boolean quiet;
@@ -119,14 +117,12 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
-        NoiseLevel noiseLevel;
-        try {
-            noiseLevel = NoiseLevel.of(noise);
-        } catch (IllegalArgumentException e) {
-            err.println("--noise: " + e.getMessage());
+        if (noise.problem() != null) {
+            err.println(noise.problem());
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
+        NoiseLevel noiseLevel = noise.level();
         if (waitS < 0) {
             err.println("--wait-s must be >= 0: " + waitS);
             err.flush();
