@@ -74,6 +74,14 @@ public final class Databases {
         // engines saving their first state at the same moment deadlocked on them.
         config.setTransactionIsolation("TRANSACTION_READ_COMMITTED");
         config.setPoolName("proactive-" + (user == null ? "pool" : user));
+        // a JDBC batch as one round trip (the engine's changed queue rows, map chunks, requests;
+        // the robot's readings): the MariaDB driver bulk-sends only inserts unless asked, and
+        // MySQL's rewrites nothing unless asked. A setting in the URL wins.
+        if (jdbcUrl.startsWith("jdbc:mariadb:") && !jdbcUrl.contains("useBulkStmts")) {
+            config.addDataSourceProperty("useBulkStmts", "true");
+        } else if (jdbcUrl.startsWith("jdbc:mysql:") && !jdbcUrl.contains("rewriteBatchedStatements")) {
+            config.addDataSourceProperty("rewriteBatchedStatements", "true");
+        }
         return config;
     }
 }

@@ -307,7 +307,7 @@ public final class JdbcRobotTables
                 });
     }
 
-    /** Replaces each chunk's row (delete, then insert: the same two statements on every database). */
+    /** Replaces each chunk's row (an upsert, as H2 in MySQL mode and MySQL / MariaDB both take it). */
     @Override
     public void writeChunks(List<MapChunk> chunks, long simTimeMs) {
         if (chunks.isEmpty()) {
@@ -329,24 +329,19 @@ public final class JdbcRobotTables
     }
 
     private void writeChunks(Connection c, List<MapChunk> chunks, long simTimeMs) throws SQLException {
-        try (PreparedStatement delete = c.prepareStatement(
-                     "DELETE FROM occupancy_map WHERE robot_id = ? AND chunk_x = ? AND chunk_y = ?");
-             PreparedStatement insert = c.prepareStatement(
-                     "INSERT INTO occupancy_map (robot_id, chunk_x, chunk_y, cells, updated_sim_time_ms) VALUES (?, ?, ?, ?, ?)")) {
+        // one upsert per chunk, sent as one batch: a driver that bulk-sends batches makes it one round trip
+        try (PreparedStatement upsert = c.prepareStatement("INSERT INTO occupancy_map (robot_id, chunk_x, chunk_y, cells,"
+                + " updated_sim_time_ms) VALUES (?, ?, ?, ?, ?) ON DUPLICATE KEY UPDATE cells = VALUES(cells),"
+                + " updated_sim_time_ms = VALUES(updated_sim_time_ms)")) {
             for (MapChunk chunk : chunks) {
-                delete.setInt(1, robotId);
-                delete.setInt(2, chunk.chunkX());
-                delete.setInt(3, chunk.chunkY());
-                delete.addBatch();
-                insert.setInt(1, robotId);
-                insert.setInt(2, chunk.chunkX());
-                insert.setInt(3, chunk.chunkY());
-                insert.setBytes(4, chunk.cells());
-                insert.setLong(5, simTimeMs);
-                insert.addBatch();
+                upsert.setInt(1, robotId);
+                upsert.setInt(2, chunk.chunkX());
+                upsert.setInt(3, chunk.chunkY());
+                upsert.setBytes(4, chunk.cells());
+                upsert.setLong(5, simTimeMs);
+                upsert.addBatch();
             }
-            delete.executeBatch();
-            insert.executeBatch();
+            upsert.executeBatch();
         }
     }
 
