@@ -48,6 +48,8 @@ import picocli.CommandLine.Spec;
 public final class EngineCommand implements Callable<Integer> {
 
     private static final Logger LOG = LoggerFactory.getLogger(EngineCommand.class);
+    /** The most threads an engine process may be given. */
+    private static final int MAX_THREADS = 1000;
 
     @Mixin
     private DbOptions db;
@@ -148,7 +150,7 @@ public final class EngineCommand implements Callable<Integer> {
         }
         int[] ids = ids();
         int robots = ids.length + (standbyIds == null ? 0 : RobotIds.parse(standbyIds).length);
-        int threadCount = threads > 0 ? threads : Math.min(robots, 2 * Runtime.getRuntime().availableProcessors());
+        int threadCount = Math.min(robots, threads > 0 ? threads : 2 * Runtime.getRuntime().availableProcessors());
         HikariConfig config = Databases.config(db.url(), db.user(), db.password());
         config.setMaximumPoolSize(2 * threadCount + 2); // an iteration's connection and a read beside it, per thread
         try (HikariDataSource pool = new HikariDataSource(config)) {
@@ -164,7 +166,7 @@ public final class EngineCommand implements Callable<Integer> {
                     ScenarioPlugins plugins = choice.plugins();
                     servers.add(new RobotServer(id, robot -> RobotEngine.builder().robotId(robot).database(pool).drive(drive)
                             .plugins(plugins).guard(lease::confirm).build(), new EngineClock(pool, id), lease, options,
-                            group == standby));
+                            group == standby, ids.length + standby.length > 1));
                 }
             }
             if (ids.length > 1 || standby.length > 0) {
@@ -193,7 +195,12 @@ public final class EngineCommand implements Callable<Integer> {
         } catch (UnknownHostException e) {
             host = "engine";
         }
-        return host + ":" + (robotIds == null ? String.valueOf(process.robotId()) : robotIds);
+        String robots = robotIds == null ? String.valueOf(process.robotId()) : robotIds.replace(" ", "");
+        if (robots.length() > 40) { // a long list: its first characters and a hash keep the name short and distinct
+            robots = robots.substring(0, 24) + "~" + Integer.toHexString(robots.hashCode());
+        }
+        String name = host + ":" + robots;
+        return name.length() <= 128 ? name : name.substring(name.length() - 128);
     }
 
     private String problem() {
@@ -223,8 +230,8 @@ public final class EngineCommand implements Callable<Integer> {
                 return e.getMessage().replace("--robot-ids", "--standby-ids");
             }
         }
-        if (threads < 0) {
-            return "--threads must be >= 0 (0: automatic): " + threads;
+        if (threads < 0 || threads > MAX_THREADS) {
+            return "--threads must be from 0 (automatic) to " + MAX_THREADS + ": " + threads;
         }
         if (!(leaseS >= 0.5) || leaseS > 3600) {
             return "--lease-s must be between 0.5 and 3600 seconds: " + leaseS;

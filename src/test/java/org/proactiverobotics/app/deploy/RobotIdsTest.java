@@ -16,6 +16,8 @@ class RobotIdsTest {
         assertThat(RobotIds.parse("1-3")).containsExactly(1, 2, 3);
         assertThat(RobotIds.parse("7, 1,3-4,3")).containsExactly(1, 3, 4, 7);
         assertThat(RobotIds.parse("0")).containsExactly(0);
+        assertThat(RobotIds.parse("2147483647")).containsExactly(Integer.MAX_VALUE); // the loop ends at the last int
+        assertThat(RobotIds.parse("1-10000,1-10000")).hasSize(10_000); // ids counted once
     }
 
     @Test
@@ -32,8 +34,8 @@ class RobotIdsTest {
         String[][] cases = {
                 {"--robot-ids", "1-x"}, {"--robot-id", "2", "--robot-ids", "1-3"},
                 {"--robot-ids", "1-3", "--standby-ids", "3-4"}, {"--lease-s", "0.1"}, {"--threads", "-1"},
-                {"--engine-name", " "}};
-        String[] expected = {"'1-x'", "not both", "robot 3 is in both", "--lease-s", "--threads", "--engine-name"};
+                {"--threads", "2000000000"}, {"--engine-name", " "}};
+        String[] expected = {"'1-x'", "not both", "robot 3 is in both", "--lease-s", "--threads", "--threads", "--engine-name"};
         for (int k = 0; k < cases.length; k++) {
             StringWriter err = new StringWriter();
             CommandLine cl = Main.commandLine();

@@ -110,26 +110,47 @@ public final class EngineClock {
         }
     }
 
-    /** Publishes that the engine has served this run up to this step. */
-    public void publish(long runId, long step, long iteration) throws SQLException {
+    /**
+     * Publishes that the engine has served this run up to this step, only while it holds the
+     * robot's lease: an engine that lost it (paused past its expiry) cannot move the robot's clock
+     * back under the engine that took over.
+     *
+     * @throws EngineLease.LostException when the lease is another engine's
+     */
+    public void publish(long runId, long step, long iteration, EngineLease lease) throws SQLException {
         try (Connection c = dataSource.getConnection()) {
             try (PreparedStatement ps = c.prepareStatement("UPDATE engine_clock SET run_id = ?, step = ?, iteration = ?, "
-                    + "updated_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ?")) {
+                    + "updated_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ? AND EXISTS (SELECT 1 FROM engine_lease"
+                    + " WHERE robot_id = ? AND owner = ? AND epoch = ?)")) {
                 ps.setLong(1, runId);
                 ps.setLong(2, step);
                 ps.setLong(3, iteration);
                 ps.setInt(4, robotId);
+                ps.setInt(5, robotId);
+                ps.setString(6, lease.owner());
+                ps.setLong(7, lease.epoch());
                 if (ps.executeUpdate() > 0) {
                     return;
                 }
             }
-            try (PreparedStatement ps = c.prepareStatement(
-                    "INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (?, ?, ?, ?)")) {
-                ps.setInt(1, robotId);
-                ps.setLong(2, runId);
-                ps.setLong(3, step);
-                ps.setLong(4, iteration);
-                ps.executeUpdate();
+            // no row yet, or the lease is lost: tell which, in one transaction
+            c.setAutoCommit(false);
+            try {
+                lease.confirm(c, iteration);
+                try (PreparedStatement ps = c.prepareStatement(
+                        "INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (?, ?, ?, ?)")) {
+                    ps.setInt(1, robotId);
+                    ps.setLong(2, runId);
+                    ps.setLong(3, step);
+                    ps.setLong(4, iteration);
+                    ps.executeUpdate();
+                }
+                c.commit();
+            } catch (SQLException | RuntimeException e) {
+                c.rollback();
+                throw e;
+            } finally {
+                c.setAutoCommit(true);
             }
         }
     }

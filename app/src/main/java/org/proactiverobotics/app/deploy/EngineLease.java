@@ -54,6 +54,11 @@ public final class EngineLease {
         return epoch >= 0;
     }
 
+    /** @return this engine's name in the lease */
+    public String owner() {
+        return owner;
+    }
+
     /** @return the epoch this engine took the lease with, or -1 */
     public long epoch() {
         return epoch;

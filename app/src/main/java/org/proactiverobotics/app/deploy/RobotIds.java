@@ -21,20 +21,25 @@ public final class RobotIds {
         for (String raw : spec.split(",", -1)) {
             String part = raw.strip();
             int dash = part.indexOf('-', 1);
+            long from;
+            long to;
             try {
-                int from = Integer.parseInt(dash < 0 ? part : part.substring(0, dash).strip());
-                int to = dash < 0 ? from : Integer.parseInt(part.substring(dash + 1).strip());
-                if (from < 0 || to < from) {
-                    throw new IllegalArgumentException(problem(spec, part));
-                }
-                if ((long) to - from + 1 + ids.size() > MAX) {
-                    throw new IllegalArgumentException("--robot-ids: more than " + MAX + " robots in '" + spec + "'");
-                }
-                for (int id = from; id <= to; id++) {
-                    ids.add(id);
-                }
+                from = Integer.parseInt(dash < 0 ? part : part.substring(0, dash).strip());
+                to = dash < 0 ? from : Integer.parseInt(part.substring(dash + 1).strip());
             } catch (NumberFormatException e) {
                 throw new IllegalArgumentException(problem(spec, part));
+            }
+            if (from < 0 || to < from) {
+                throw new IllegalArgumentException(problem(spec, part));
+            }
+            if (to - from + 1 > MAX) {
+                throw new IllegalArgumentException("--robot-ids: more than " + MAX + " robots in '" + spec + "'");
+            }
+            for (long id = from; id <= to; id++) { // long: a range up to Integer.MAX_VALUE ends
+                ids.add((int) id);
+            }
+            if (ids.size() > MAX) {
+                throw new IllegalArgumentException("--robot-ids: more than " + MAX + " robots in '" + spec + "'");
             }
         }
         return ids.stream().mapToInt(Integer::intValue).toArray();

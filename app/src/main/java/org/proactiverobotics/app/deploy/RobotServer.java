@@ -46,8 +46,12 @@ public final class RobotServer {
     /** A standby robot is taken only once it has been running a lease's time (its own engine had the chance to take it). */
     private final boolean standby;
     private final long leaseNanos;
-    /** When this engine first saw the robot's clock, System.nanoTime() (0: not yet). */
-    private long firstSeenNanos;
+    /** The robot's run last seen running, and since when (System.nanoTime()). */
+    private long runningRunId = -1;
+    private long runningSinceNanos;
+    /** Whether a corrupt saved state set this robot aside (an engine serving several robots goes on with the others). */
+    private final boolean setAsideOnCorrupt;
+    private boolean setAside;
     private RobotEngine side;
     private long runId = -1;
     private long served;
@@ -72,11 +76,13 @@ public final class RobotServer {
      * @param lease   the robot's lease row, as this engine holds it
      * @param options how to run
      * @param standby whether the robot is another engine's to serve first: tried only once this
-     *                engine has seen the robot running for a lease's time, and then taken only when
-     *                no other engine holds it (its engine died, or never came)
+     *                engine has seen the robot's run running for a lease's time, and then taken only
+     *                when no other engine holds it (its engine died, or never came)
+     * @param setAsideOnCorrupt whether a saved state that cannot be read sets this robot aside (an
+     *                engine serving several) instead of stopping the engine (one robot: it says which row and stops)
      */
     public RobotServer(int robotId, IntFunction<RobotEngine> engines, EngineClock clock, EngineLease lease,
-                       EngineLoop.Options options, boolean standby) {
+                       EngineLoop.Options options, boolean standby, boolean setAsideOnCorrupt) {
         this.robotId = robotId;
         this.engines = engines;
         this.clock = clock;
@@ -84,6 +90,7 @@ public final class RobotServer {
         this.options = options;
         this.renewEveryNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(1, options.leaseMs() / 3));
         this.standby = standby;
+        this.setAsideOnCorrupt = setAsideOnCorrupt;
         this.leaseNanos = TimeUnit.MILLISECONDS.toNanos(options.leaseMs());
     }
 
@@ -126,7 +133,15 @@ public final class RobotServer {
             backoff.succeeded();
             return worked;
         } catch (CorruptStateException e) {
-            throw e; // never a silent fresh start: the command says which row and stops
+            if (!setAsideOnCorrupt) {
+                throw e; // never a silent fresh start: the command says which row and stops
+            }
+            setAside = true;
+            runId = -1;
+            LOG.error("engine {}: the saved engine state of robot {} cannot be read ({}); robot {} is set aside, the"
+                    + " others are served (start an engine for it alone with --fresh to discard that state)",
+                    robotId, robotId, oneLine(e), robotId);
+            return false;
         } catch (SQLException | RuntimeException e) {
             failed(e);
             return false;
@@ -142,14 +157,22 @@ public final class RobotServer {
             renewWhileIdle(now);
             return false;
         }
-        if (firstSeenNanos == 0) {
-            firstSeenNanos = now;
+        if (robot.running() && robot.runId() != runningRunId) {
+            runningRunId = robot.runId(); // a standby waits a lease's time from the start of each run it sees running
+            runningSinceNanos = now;
+        }
+        if (setAside) {
+            renewWhileIdle(now); // held, so that no other engine takes the robot and stops on the same state
+            return false;
         }
         if (!lease.held()) {
-            if (now - nextTakeNanos < 0 || standby && now - firstSeenNanos < leaseNanos) {
+            if (now - nextTakeNanos < 0 || standby && (!robot.running() || now - runningSinceNanos < leaseNanos)) {
                 return false;
             }
             nextTakeNanos = now + TAKE_EVERY_NANOS;
+            if (side == null) {
+                side = engines.apply(robotId); // built before the lease is taken: a failure here leaves nothing half done
+            }
             if (!lease.tryTake()) {
                 if (!waitingLogged) {
                     waitingLogged = true;
@@ -160,13 +183,15 @@ public final class RobotServer {
             }
             waitingLogged = false;
             LOG.info("engine {}: lease of robot {} taken (epoch {})", robotId, robotId, lease.epoch());
-            if (side == null) {
-                side = engines.apply(robotId);
-            }
             runId = -1; // adopt the run anew: whatever another engine saved in between is the truth
             nextRenewNanos = now + renewEveryNanos;
         }
         if (robot.runId() != runId) {
+            if (!lease.renew()) { // adopting writes outside an iteration: only while the lease is surely this engine's
+                lost();
+                return false;
+            }
+            nextRenewNanos = now + renewEveryNanos;
             adopt(robot);
         }
         if (!robot.running()) {
@@ -197,7 +222,7 @@ public final class RobotServer {
         nextRenewNanos = t0 + renewEveryNanos;
         long iteration = side.engine().iteration();
         served = Math.max(served, robot.step());
-        clock.publish(runId, served, iteration);
+        clock.publish(runId, served, iteration, lease);
         iterationNanosSinceLog += System.nanoTime() - t0;
         if (++iterationsSinceLog >= options.logEvery()) {
             LOG.info("engine {}: iteration {} for robot step {} ({} s simulated, {} timing), {} ms per iteration",
@@ -233,21 +258,21 @@ public final class RobotServer {
             // An iteration saved but not yet published (killed in between) served the next step.
             served = last.get().step() + Math.max(0, iteration - last.get().iteration());
             if (iteration != last.get().iteration()) {
-                clock.publish(robot.runId(), served, iteration);
+                clock.publish(robot.runId(), served, iteration, lease);
             }
             LOG.info("engine {}: {} robot run {} at step {} (iteration {})", robotId,
                     resumed ? "resuming" : "no saved state; starting afresh in", robot.runId(), served, iteration);
         } else if (sameRun) {
             side.startFresh();
             served = last.get().step();
-            clock.publish(robot.runId(), served, side.engine().iteration());
+            clock.publish(robot.runId(), served, side.engine().iteration(), lease);
             LOG.info("engine {}: --fresh: saved state discarded; serving robot run {} from step {}", robotId,
                     robot.runId(), served + 1);
         } else {
             clock.resetForNewRun();
             side.startFresh();
             served = 0;
-            clock.publish(robot.runId(), 0, 0);
+            clock.publish(robot.runId(), 0, 0, lease);
             LOG.info("engine {}: new robot run {} ({} timing): commands and requests of earlier runs cleared, "
                     + "checkpoints not reached, engine started fresh", robotId, robot.runId(), robot.timing());
         }

@@ -9,8 +9,8 @@ import java.util.Set;
  * A sparse occupancy grid in chunks, as stored in {@code occupancy_map}: cells of
  * {@value #CELL_M} m, each unknown, free or occupied; a cell never seen is unknown. A seen cell
  * keeps its evidence in its byte (log-odds in whole steps): a ray ending on it adds
- * {@value #HIT}, a ray passing through it takes {@value #MISS} away until the cell has been hit
- * twice ({@value #CONFIRMED}: a wall, for good), and it is occupied while any evidence is left
+ * {@value #HIT}, a ray passing through it takes {@value #MISS} away until its evidence reaches
+ * {@value #CONFIRMED} (two hits without a ray through it between them: a wall, for good), and it is occupied while any evidence is left
  * (stored byte {@value #OCCUPIED} and above; {@value #FREE}: seen, no evidence). A single noisy
  * reading that drew a wall across a doorway is taken away again by the rays that later pass
  * through it; a wall seen twice, or once from close by ({@link #confirm}), stays. Remembers which chunks changed
@@ -84,16 +84,25 @@ public final class OccupancyMap {
     private void put(int cx, int cy, byte[] cells) {
         if (cx < originCx || cy < originCy || cx >= originCx + columns || cy >= originCy + rows) {
             boolean none = columns == 0;
-            int loX = none ? cx : Math.min(cx, originCx);
-            int loY = none ? cy : Math.min(cy, originCy);
-            int hiX = none ? cx : Math.max(cx, originCx + columns - 1);
-            int hiY = none ? cy : Math.max(cy, originCy + rows - 1);
+            int loX = none ? cx : originCx;
+            int loY = none ? cy : originCy;
+            int hiX = none ? cx : originCx + columns - 1;
+            int hiY = none ? cy : originCy + rows - 1;
+            // only the axis that ran out grows, by half its extent (at least 4 chunks): amortised copies
             int spareX = Math.max(4, (hiX - loX + 1) / 2);
             int spareY = Math.max(4, (hiY - loY + 1) / 2);
-            loX -= spareX;
-            hiX += spareX;
-            loY -= spareY;
-            hiY += spareY;
+            if (none || cx < loX) {
+                loX = Math.min(loX, cx) - spareX;
+            }
+            if (none || cx > hiX) {
+                hiX = Math.max(hiX, cx) + spareX;
+            }
+            if (none || cy < loY) {
+                loY = Math.min(loY, cy) - spareY;
+            }
+            if (none || cy > hiY) {
+                hiY = Math.max(hiY, cy) + spareY;
+            }
             int w = hiX - loX + 1;
             long size = (long) w * (hiY - loY + 1);
             if (size > MAX_CHUNKS) {

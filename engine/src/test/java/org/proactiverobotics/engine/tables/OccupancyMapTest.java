@@ -53,12 +53,15 @@ class OccupancyMapTest {
     }
 
     @Test
-    void aChunkKilometresAwayIsRefusedWithItsPlace() {
+    void aLongCorridorGrowsOneAxisAndAChunkFarAwayOnBothIsRefusedWithItsPlace() {
         OccupancyMap map = OccupancyMap.empty();
-        map.set(0, 0, OccupancyMap.OCCUPIED);
-        assertThatThrownBy(() -> map.set(10_000_000, 0, OccupancyMap.OCCUPIED))
+        for (int i = 0; i < 40_000; i += 7) { // a straight 2 km drive east
+            map.set(i, 3, OccupancyMap.FREE);
+        }
+        assertThat(map.get(39_998, 3)).isEqualTo(OccupancyMap.FREE);
+        assertThatThrownBy(() -> map.set(-10_000_000, 10_000_000, OccupancyMap.OCCUPIED))
                 .isInstanceOf(IllegalStateException.class).hasMessageContaining("too far away");
-        assertThat(map.get(0, 0)).isEqualTo(OccupancyMap.OCCUPIED);
+        assertThat(map.get(0, 3)).isEqualTo(OccupancyMap.FREE);
     }
 
     @Test

@@ -1,7 +1,8 @@
 /**
- * Mapping: UpdateMap marks, for each new distance scan, the cells every ray crossed free and the
- * cell where it hit occupied, in an occupancy grid of 0.05 m cells, and writes the chunks that
- * changed to {@code occupancy_map} in the iteration's transaction. The world is known only
- * through the readings; occupied cells stay occupied (the worlds are static).
+ * Mapping: UpdateMap adds each new distance scan to an occupancy grid of 0.05 m cells (a ray
+ * takes evidence of a wall from the cells it crossed and adds some to the cell where it hit; see
+ * {@link org.proactiverobotics.engine.tables.OccupancyMap}) and writes the chunks that changed to
+ * {@code occupancy_map} in the iteration's transaction. The world is known only through the
+ * readings; a wall seen twice, or once from close by, stays.
  */
 package org.proactiverobotics.engine.scenario.mapping;

@@ -1,0 +1,54 @@
+package org.proactiverobotics.app.deploy;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.sql.Connection;
+import java.sql.Statement;
+import javax.sql.DataSource;
+import org.junit.jupiter.api.Test;
+import org.proactiverobotics.db.DatabaseKind;
+import org.proactiverobotics.db.Schema;
+import org.proactiverobotics.db.TestDatabase;
+import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.CorruptStateException;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.Strategy;
+
+/** One robot's turn in an engine process: what a saved state that cannot be read does, with one robot and with several. */
+class RobotServerTest {
+
+    private static final long RUN = 42;
+
+    private static RobotServer server(DataSource ds, int robot, boolean setAsideOnCorrupt) {
+        EngineLease lease = new EngineLease(ds, robot, "engine-test", 5_000);
+        EngineLoop.Options options = new EngineLoop.Options(Strategy.named("safety-first"), false, 32, 500, 5_000);
+        return new RobotServer(robot, id -> RobotEngine.builder().robotId(id).database(ds).guard(lease::confirm).build(),
+                new EngineClock(ds, robot), lease, options, false, setAsideOnCorrupt);
+    }
+
+    @Test
+    void aStateThatCannotBeReadStopsAOneRobotEngineButOnlySetsThatRobotAsideInAFleet() throws Exception {
+        try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
+            DataSource ds = db.dataSource();
+            Schema.apply(ds);
+            try (Connection c = ds.getConnection(); Statement s = c.createStatement()) {
+                for (int robot : new int[] {1, 2}) {
+                    // the run this engine served before, and a saved state that is not JSON
+                    s.executeUpdate("INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (" + robot + ", " + RUN + ", 10, 10)");
+                    s.executeUpdate("INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (" + robot + ", 10, 'not json')");
+                }
+            }
+            EngineClock.RobotTick running = new EngineClock.RobotTick(RUN, 11, 352, "sync", "RUNNING");
+
+            RobotServer alone = server(ds, 1, false);
+            assertThatThrownBy(() -> alone.turn(running, System.nanoTime())).isInstanceOf(CorruptStateException.class)
+                    .hasMessageContaining("robot_id=1");
+
+            RobotServer inFleet = server(ds, 2, true);
+            assertThat(inFleet.turn(running, System.nanoTime())).isFalse();
+            assertThat(inFleet.turn(running, System.nanoTime())).as("set aside, not retried into the same failure").isFalse();
+            assertThat(inFleet.serving()).as("its lease is kept: no other engine takes it and stops on the same row").isTrue();
+        }
+    }
+}
