@@ -21,6 +21,12 @@ class RobotIdsTest {
     }
 
     @Test
+    void idsAreWrittenBackAsRanges() {
+        assertThat(RobotIds.format(RobotIds.parse("7, 1,3-5,9,10"))).isEqualTo("1,3-5,7,9-10");
+        assertThat(RobotIds.format(new int[0])).isEmpty();
+    }
+
+    @Test
     void whatIsNotAnIdOrARangeIsNamed() {
         assertThatThrownBy(() -> RobotIds.parse("1-x")).hasMessageContaining("'1-x'");
         assertThatThrownBy(() -> RobotIds.parse("5-2")).hasMessageContaining("'5-2'");

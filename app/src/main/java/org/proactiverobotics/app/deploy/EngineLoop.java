@@ -36,6 +36,8 @@ public final class EngineLoop {
     }
 
     private static final Logger LOG = LoggerFactory.getLogger(EngineLoop.class);
+    /** How often a thread of an engine serving several robots names those that have not started a run. */
+    private static final long WAITING_EVERY_NANOS = TimeUnit.SECONDS.toNanos(30);
 
     private final DataSource dataSource;
     private final List<RobotServer> servers;
@@ -100,6 +102,7 @@ public final class EngineLoop {
                          AtomicReference<RuntimeException> fatal) {
         int[] ids = share.stream().mapToInt(RobotServer::robotId).toArray();
         long idlePolls = 0;
+        long nextWaitingNanos = System.nanoTime();
         Backoff backoff = new Backoff(100, 5_000, System::nanoTime);
         long failures = 0;
         while (!done.getAsBoolean()) {
@@ -124,6 +127,16 @@ public final class EngineLoop {
                 }
                 pause(TimeUnit.MILLISECONDS.toNanos(backoff.delayMs()), done);
                 continue;
+            }
+            if (share.size() > 1 || servers.size() > 1) {
+                long now = System.nanoTime();
+                if (now - nextWaitingNanos >= 0) {
+                    nextWaitingNanos = now + WAITING_EVERY_NANOS;
+                    String waiting = RobotIds.format(java.util.Arrays.stream(ids).filter(id -> !ticks.containsKey(id)).toArray());
+                    if (!waiting.isEmpty()) {
+                        LOG.info("engine: waiting for the robot(s) {}: no run started yet", waiting);
+                    }
+                }
             }
             boolean worked = false;
             long wait = Long.MAX_VALUE;

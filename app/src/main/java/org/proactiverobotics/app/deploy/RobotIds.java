@@ -45,6 +45,26 @@ public final class RobotIds {
         return ids.stream().mapToInt(Integer::intValue).toArray();
     }
 
+    /**
+     * @param ids robot ids, ascending
+     * @return them as ids and ranges, e.g. {@code 1-3,7} (empty for none)
+     */
+    public static String format(int[] ids) {
+        StringBuilder out = new StringBuilder();
+        for (int k = 0; k < ids.length; ) {
+            int end = k;
+            while (end + 1 < ids.length && ids[end + 1] == ids[end] + 1) {
+                end++;
+            }
+            out.append(out.length() == 0 ? "" : ",").append(ids[k]);
+            if (end > k) {
+                out.append('-').append(ids[end]);
+            }
+            k = end + 1;
+        }
+        return out.toString();
+    }
+
     private static String problem(String spec, String part) {
         return "--robot-ids: '" + part + "' in '" + spec + "' is not a robot id (>= 0) or a range FROM-TO"
                 + " (e.g. 1-100 or 1,3,7-9)";

@@ -49,8 +49,8 @@ public final class RobotServer {
     /** The robot's run last seen running, and since when (System.nanoTime()). */
     private long runningRunId = -1;
     private long runningSinceNanos;
-    /** Whether a corrupt saved state set this robot aside (an engine serving several robots goes on with the others). */
-    private final boolean setAsideOnCorrupt;
+    /** Whether the engine serves several robots (a corrupt saved state then sets this one aside). */
+    private final boolean oneOfSeveral;
     private boolean setAside;
     private RobotEngine side;
     private long runId = -1;
@@ -78,11 +78,12 @@ public final class RobotServer {
      * @param standby whether the robot is another engine's to serve first: tried only once this
      *                engine has seen the robot's run running for a lease's time, and then taken only
      *                when no other engine holds it (its engine died, or never came)
-     * @param setAsideOnCorrupt whether a saved state that cannot be read sets this robot aside (an
-     *                engine serving several) instead of stopping the engine (one robot: it says which row and stops)
+     * @param oneOfSeveral whether the engine serves several robots: then a saved state that cannot
+     *                be read sets this robot aside instead of stopping the engine (one robot: it says
+     *                which row and stops), and the loop, not each robot, says which have not started
      */
     public RobotServer(int robotId, IntFunction<RobotEngine> engines, EngineClock clock, EngineLease lease,
-                       EngineLoop.Options options, boolean standby, boolean setAsideOnCorrupt) {
+                       EngineLoop.Options options, boolean standby, boolean oneOfSeveral) {
         this.robotId = robotId;
         this.engines = engines;
         this.clock = clock;
@@ -90,7 +91,7 @@ public final class RobotServer {
         this.options = options;
         this.renewEveryNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(1, options.leaseMs() / 3));
         this.standby = standby;
-        this.setAsideOnCorrupt = setAsideOnCorrupt;
+        this.oneOfSeveral = oneOfSeveral;
         this.leaseNanos = TimeUnit.MILLISECONDS.toNanos(options.leaseMs());
     }
 
@@ -133,7 +134,7 @@ public final class RobotServer {
             backoff.succeeded();
             return worked;
         } catch (CorruptStateException e) {
-            if (!setAsideOnCorrupt) {
+            if (!oneOfSeveral) {
                 throw e; // never a silent fresh start: the command says which row and stops
             }
             setAside = true;
@@ -150,7 +151,7 @@ public final class RobotServer {
 
     private boolean serve(RobotTick robot, long now) throws SQLException {
         if (robot == null) {
-            if (now - nextStatusNanos >= 0) {
+            if (!oneOfSeveral && now - nextStatusNanos >= 0) { // an engine of several robots says it for all at once (EngineLoop)
                 nextStatusNanos = now + STATUS_EVERY_NANOS;
                 LOG.info("engine {}: waiting for the robot (robot {} has not started a run)", robotId, robotId);
             }
