@@ -78,7 +78,8 @@ public final class EngineCommand implements Callable<Integer> {
 
     @Option(names = "--robot-ids", paramLabel = "LIST",
             description = "Serve several robots, each with its own state, scenarios and strategy: ids and ranges,"
-                    + " e.g. 1-100 or 1,3,7-9 (instead of --robot-id). A robot that starts later is picked up.")
+                    + " e.g. 1-100 or 1,3,7-9 (instead of --robot-id). A robot is taken up when it runs and dropped"
+                    + " a minute after its run ended.")
     private String robotIds;
 
     @Option(names = "--standby-ids", paramLabel = "LIST",

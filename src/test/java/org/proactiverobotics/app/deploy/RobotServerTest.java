@@ -51,4 +51,31 @@ class RobotServerTest {
             assertThat(inFleet.serving()).as("its lease is kept: no other engine takes it and stops on the same row").isTrue();
         }
     }
+
+    @Test
+    void inAFleetARobotIsTakenUpWhenItRunsAndDroppedAMinuteAfterItsRunEnded() throws Exception {
+        try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
+            DataSource ds = db.dataSource();
+            Schema.apply(ds);
+            RobotServer server = server(ds, 3, true);
+            long t = System.nanoTime();
+            assertThat(server.turn(new EngineClock.RobotTick(7, 5, 160, "sync", "FINISHED"), t)).isFalse();
+            assertThat(server.serving()).as("an ended run is nobody's to take up").isFalse();
+
+            assertThat(server.turn(new EngineClock.RobotTick(8, 1, 32, "sync", "RUNNING"), t)).as("one iteration").isTrue();
+            assertThat(server.serving()).isTrue();
+            EngineClock.RobotTick ended = new EngineClock.RobotTick(8, 1, 32, "sync", "FINISHED");
+            assertThat(server.turn(ended, t + 1)).isFalse();
+            assertThat(server.turn(ended, t + java.util.concurrent.TimeUnit.SECONDS.toNanos(30))).isFalse();
+            assertThat(server.serving()).as("kept for a while after its run").isTrue();
+            assertThat(server.turn(ended, t + java.util.concurrent.TimeUnit.SECONDS.toNanos(RobotServer.DROP_AFTER_S + 1))).isFalse();
+            assertThat(server.serving()).as("dropped, its lease released").isFalse();
+            try (Connection c = ds.getConnection(); Statement s = c.createStatement();
+                 java.sql.ResultSet rs = s.executeQuery("SELECT expires_at < CURRENT_TIMESTAMP(3), iteration FROM engine_lease WHERE robot_id = 3")) {
+                assertThat(rs.next()).isTrue();
+                assertThat(rs.getBoolean(1)).isTrue();
+                assertThat(rs.getLong(2)).isEqualTo(1);
+            }
+        }
+    }
 }

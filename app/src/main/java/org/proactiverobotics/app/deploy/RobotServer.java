@@ -36,6 +36,8 @@ public final class RobotServer {
     private static final Logger LOG = LoggerFactory.getLogger(RobotServer.class);
     private static final long STATUS_EVERY_NANOS = TimeUnit.SECONDS.toNanos(30);
     private static final long TAKE_EVERY_NANOS = TimeUnit.SECONDS.toNanos(1);
+    /** In a fleet, a robot whose run ended this long ago is dropped, seconds. */
+    static final long DROP_AFTER_S = 60;
 
     private final int robotId;
     private final IntFunction<RobotEngine> engines;
@@ -49,6 +51,9 @@ public final class RobotServer {
     /** The robot's run last seen running, and since when (System.nanoTime()). */
     private long runningRunId = -1;
     private long runningSinceNanos;
+    /** The robot's run last seen ended, and since when (System.nanoTime()). */
+    private long endedRunId = -1;
+    private long endedSinceNanos;
     /** Whether the engine serves several robots (a corrupt saved state then sets this one aside). */
     private final boolean oneOfSeveral;
     private boolean setAside;
@@ -167,7 +172,8 @@ public final class RobotServer {
             return false;
         }
         if (!lease.held()) {
-            if (now - nextTakeNanos < 0 || standby && (!robot.running() || now - runningSinceNanos < leaseNanos)) {
+            if (now - nextTakeNanos < 0 || standby && (!robot.running() || now - runningSinceNanos < leaseNanos)
+                    || oneOfSeveral && !robot.running()) { // in a fleet, a robot is taken up when it runs
                 return false;
             }
             nextTakeNanos = now + TAKE_EVERY_NANOS;
@@ -196,6 +202,9 @@ public final class RobotServer {
             adopt(robot);
         }
         if (!robot.running()) {
+            if (oneOfSeveral && dropIfLongEnded(robot, now)) {
+                return false;
+            }
             if (!finishedLogged) {
                 finishedLogged = true;
                 LOG.info("engine {}: robot run {} {} at step {} ({} s simulated); nothing to serve until a new run",
@@ -232,6 +241,30 @@ public final class RobotServer {
             iterationsSinceLog = 0;
             iterationNanosSinceLog = 0;
         }
+        return true;
+    }
+
+    /**
+     * In a fleet, a robot whose run ended {@value #DROP_AFTER_S} s ago is dropped: its engine's
+     * memory is freed and its lease released, and it is taken up again (by whichever engine comes
+     * first) when a new run starts.
+     *
+     * @return whether it was dropped now
+     */
+    private boolean dropIfLongEnded(RobotTick robot, long now) throws SQLException {
+        if (robot.runId() != endedRunId) {
+            endedRunId = robot.runId();
+            endedSinceNanos = now;
+            return false;
+        }
+        if (side == null || now - endedSinceNanos < TimeUnit.SECONDS.toNanos(DROP_AFTER_S)) {
+            return false;
+        }
+        LOG.info("engine {}: robot run {} ended {} s ago; robot {} dropped (state saved, lease released;"
+                + " taken up again when a new run starts)", robotId, robot.runId(), DROP_AFTER_S, robotId);
+        lease.release();
+        side = null;
+        runId = -1;
         return true;
     }
 
