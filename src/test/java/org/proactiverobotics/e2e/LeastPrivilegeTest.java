@@ -75,6 +75,12 @@ class LeastPrivilegeTest {
                 + "VALUES (99, 1, 0, 0, 'sync', 'RUNNING')")).hasMessageContaining("denied");
         assertThatThrownBy(() -> asRobot("INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (99, 1, 0, 0)"))
                 .hasMessageContaining("denied");
+        // the leases are the engines' alone: the robot may not even see who serves it, the engine may not delete one
+        asEngine("INSERT INTO engine_lease (robot_id, owner, epoch, expires_at) VALUES (99, 'e', 1, CURRENT_TIMESTAMP(3))");
+        asEngine("UPDATE engine_lease SET epoch = 2 WHERE robot_id = 99");
+        assertThatThrownBy(() -> asRobot("SELECT * FROM engine_lease")).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asRobot("UPDATE engine_lease SET owner = 'r' WHERE robot_id = 99")).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asEngine("DELETE FROM engine_lease WHERE robot_id = 99")).hasMessageContaining("denied");
         // Column grants: the engine may only mark checkpoints, the robot may only mark requests answered.
         assertThatThrownBy(() -> asEngine("UPDATE checkpoints SET x_m = 0 WHERE robot_id = 99"))
                 .hasMessageContaining("denied");
