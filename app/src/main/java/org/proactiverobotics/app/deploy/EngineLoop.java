@@ -2,6 +2,7 @@ package org.proactiverobotics.app.deploy;
 
 import java.sql.SQLException;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -128,20 +129,17 @@ public final class EngineLoop {
                 pause(TimeUnit.MILLISECONDS.toNanos(backoff.delayMs()), done);
                 continue;
             }
-            if (share.size() > 1 || servers.size() > 1) {
-                long now = System.nanoTime();
-                if (now - nextWaitingNanos >= 0) {
-                    nextWaitingNanos = now + WAITING_EVERY_NANOS;
-                    String waiting = RobotIds.format(java.util.Arrays.stream(ids).filter(id -> !ticks.containsKey(id)).toArray());
-                    if (!waiting.isEmpty()) {
-                        LOG.info("engine: waiting for the robot(s) {}: no run started yet", waiting);
-                    }
+            long now = System.nanoTime();
+            if (servers.size() > 1 && now - nextWaitingNanos >= 0) { // one line for every robot of the share not started yet
+                nextWaitingNanos = now + WAITING_EVERY_NANOS;
+                String waiting = RobotIds.format(Arrays.stream(ids).filter(id -> !ticks.containsKey(id)).toArray());
+                if (!waiting.isEmpty()) {
+                    LOG.info("engine: waiting for the robot(s) {}: no run started yet", waiting);
                 }
             }
             boolean worked = false;
             long wait = Long.MAX_VALUE;
             try {
-                long now = System.nanoTime();
                 for (RobotServer s : share) {
                     worked |= s.turn(ticks.get(s.robotId()), now);
                     long w = s.realTimeWaitNanos();

@@ -48,12 +48,10 @@ public final class RobotServer {
     /** A standby robot is taken only once it has been running a lease's time (its own engine had the chance to take it). */
     private final boolean standby;
     private final long leaseNanos;
-    /** The robot's run last seen running, and since when (System.nanoTime()). */
-    private long runningRunId = -1;
-    private long runningSinceNanos;
-    /** The robot's run last seen ended, and since when (System.nanoTime()). */
-    private long endedRunId = -1;
-    private long endedSinceNanos;
+    /** The robot's run and whether it ran, as last seen, and since when (System.nanoTime()): a standby's wait, a drop's. */
+    private long seenRunId = -1;
+    private boolean seenRunning;
+    private long seenSinceNanos;
     /** Whether the engine serves several robots (a corrupt saved state then sets this one aside). */
     private final boolean oneOfSeveral;
     private boolean setAside;
@@ -163,16 +161,17 @@ public final class RobotServer {
             renewWhileIdle(now);
             return false;
         }
-        if (robot.running() && robot.runId() != runningRunId) {
-            runningRunId = robot.runId(); // a standby waits a lease's time from the start of each run it sees running
-            runningSinceNanos = now;
+        if (robot.runId() != seenRunId || robot.running() != seenRunning) {
+            seenRunId = robot.runId();
+            seenRunning = robot.running();
+            seenSinceNanos = now;
         }
         if (setAside) {
             renewWhileIdle(now); // held, so that no other engine takes the robot and stops on the same state
             return false;
         }
         if (!lease.held()) {
-            if (now - nextTakeNanos < 0 || standby && (!robot.running() || now - runningSinceNanos < leaseNanos)
+            if (now - nextTakeNanos < 0 || standby && (!robot.running() || now - seenSinceNanos < leaseNanos)
                     || oneOfSeveral && !robot.running()) { // in a fleet, a robot is taken up when it runs
                 return false;
             }
@@ -252,12 +251,7 @@ public final class RobotServer {
      * @return whether it was dropped now
      */
     private boolean dropIfLongEnded(RobotTick robot, long now) throws SQLException {
-        if (robot.runId() != endedRunId) {
-            endedRunId = robot.runId();
-            endedSinceNanos = now;
-            return false;
-        }
-        if (side == null || now - endedSinceNanos < TimeUnit.SECONDS.toNanos(DROP_AFTER_S)) {
+        if (side == null || now - seenSinceNanos < TimeUnit.SECONDS.toNanos(DROP_AFTER_S)) {
             return false;
         }
         LOG.info("engine {}: robot run {} ended {} s ago; robot {} dropped (state saved, lease released;"
