@@ -14,7 +14,8 @@ import org.proactiverobotics.engine.IterationTransaction;
 
 /**
  * The engine side's tables over JDBC, for one robot. Every statement is plain SQL that H2
- * (MySQL mode), MariaDB and MySQL 8 all run; every read goes through a {@code robot_id} index.
+ * (MySQL mode), MariaDB and MySQL 8 all run (but the map's upsert, which H2 runs far faster in its
+ * own words); every read goes through a {@code robot_id} index.
  *
  * <p>Over an {@link IterationTransaction}, during an iteration, the rules' reads are served from
  * an {@link IterationSnapshot} read in one query the first time a rule reads, the rules'
@@ -37,6 +38,14 @@ public final class JdbcRobotTables
     private static final String INSERT_REQUEST = "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)";
     private static final String MARK_REACHED =
             "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?";
+    private static final String UPSERT_CHUNK = "INSERT INTO occupancy_map (robot_id, chunk_x, chunk_y, cells,"
+            + " updated_sim_time_ms) VALUES (?, ?, ?, ?, ?) ON DUPLICATE KEY UPDATE cells = VALUES(cells),"
+            + " updated_sim_time_ms = VALUES(updated_sim_time_ms)";
+    /** The same upsert in H2's own words. */
+    private static final String UPSERT_CHUNK_H2 = "MERGE INTO occupancy_map (robot_id, chunk_x, chunk_y, cells,"
+            + " updated_sim_time_ms) KEY (robot_id, chunk_x, chunk_y) VALUES (?, ?, ?, ?, ?)";
+    /** The chunk upsert this database takes, chosen at the first write. */
+    private String upsertChunkSql;
     private static final String INSERT_COMMAND =
             "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)";
 
@@ -329,10 +338,12 @@ public final class JdbcRobotTables
     }
 
     private void writeChunks(Connection c, List<MapChunk> chunks, long simTimeMs) throws SQLException {
+        if (upsertChunkSql == null) {
+            // H2 runs ON DUPLICATE KEY as a failed insert and a freshly parsed UPDATE per row (12 % of an H2 mission, JFR)
+            upsertChunkSql = "H2".equals(c.getMetaData().getDatabaseProductName()) ? UPSERT_CHUNK_H2 : UPSERT_CHUNK;
+        }
         // one upsert per chunk, sent as one batch: a driver that bulk-sends batches makes it one round trip
-        try (PreparedStatement upsert = c.prepareStatement("INSERT INTO occupancy_map (robot_id, chunk_x, chunk_y, cells,"
-                + " updated_sim_time_ms) VALUES (?, ?, ?, ?, ?) ON DUPLICATE KEY UPDATE cells = VALUES(cells),"
-                + " updated_sim_time_ms = VALUES(updated_sim_time_ms)")) {
+        try (PreparedStatement upsert = c.prepareStatement(upsertChunkSql)) {
             for (MapChunk chunk : chunks) {
                 upsert.setInt(1, robotId);
                 upsert.setInt(2, chunk.chunkX());
