@@ -35,6 +35,8 @@ public final class RouteFollower {
     /** Plans in a row that found no route. */
     private int plansWithoutRoute;
 
+    /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
+    private transient double[] legM;
     private transient double targetX;
     private transient double targetY;
 
@@ -69,6 +71,7 @@ public final class RouteFollower {
             plansWithoutRoute = 0;
             xs = route.xs();
             ys = route.ys();
+            legM = null;
             nearest = 0;
         }
         if (inSight(map, x, y, goalX, goalY, sightM)) {
@@ -77,9 +80,10 @@ public final class RouteFollower {
             return Status.TARGET;
         }
         int chosen = Math.min(nearest + 1, xs.length - 1);
+        double[] legs = legs();
         double along = 0;
         for (int k = nearest + 1; k < xs.length; k++) {
-            along += Math.hypot(xs[k] - xs[k - 1], ys[k] - ys[k - 1]);
+            along += legs[k - 1];
             if (k > chosen && along > LOOKAHEAD_M) {
                 break;
             }
@@ -113,11 +117,36 @@ public final class RouteFollower {
             return Math.hypot(goalX - x, goalY - y);
         }
         int k = nearest(x, y);
+        double[] legs = legs();
         double sum = Math.hypot(xs[k] - x, ys[k] - y);
         for (int q = k + 1; q < xs.length; q++) {
-            sum += Math.hypot(xs[q] - xs[q - 1], ys[q] - ys[q - 1]);
+            sum += legs[q - 1];
         }
         return sum;
+    }
+
+    /** @return the route's leg lengths, metres: leg k joins waypoints k and k + 1 */
+    private double[] legs() {
+        if (legM == null) {
+            legM = new double[xs.length - 1];
+            for (int k = 0; k < legM.length; k++) {
+                legM[k] = Math.hypot(xs[k + 1] - xs[k], ys[k + 1] - ys[k]);
+            }
+        }
+        return legM;
+    }
+
+    /** @return whether hypot(dx, dy) &gt; m, exactly as hypot decides it, with hypot only at a near tie */
+    static boolean beyond(double dx, double dy, double m) {
+        double d2 = dx * dx + dy * dy;
+        double m2 = m * m;
+        if (d2 > m2 * (1 + 1e-9)) {
+            return true;
+        }
+        if (d2 < m2 * (1 - 1e-9)) {
+            return false;
+        }
+        return Math.hypot(dx, dy) > m;
     }
 
     /** The waypoint whose leg onward passes nearest the robot (the last waypoint for none). */
@@ -146,13 +175,14 @@ public final class RouteFollower {
     private boolean blockedAhead(OccupancyMap map, double x, double y, int nearest, double robotRadiusM) {
         double checked = 0;
         double step = OccupancyMap.CELL_M / 2;
+        double[] legs = legs();
         for (int k = nearest; k < xs.length - 1 && checked < CHECK_AHEAD_M; k++) {
-            double len = Math.hypot(xs[k + 1] - xs[k], ys[k + 1] - ys[k]);
+            double len = legs[k];
             int n = Math.max(1, (int) Math.ceil(len / step));
             for (int q = 0; q <= n; q++) {
                 double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
                 double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
-                if (Math.hypot(px - x, py - y) > RoutePlanner.START_CLEAR_M && map.occupiedWithin(px, py, robotRadiusM + RoutePlanner.BODY_MARGIN_M)) {
+                if (beyond(px - x, py - y, RoutePlanner.START_CLEAR_M) && map.occupiedWithin(px, py, robotRadiusM + RoutePlanner.BODY_MARGIN_M)) {
                     return true;
                 }
             }

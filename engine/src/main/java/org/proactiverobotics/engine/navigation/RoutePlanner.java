@@ -1,5 +1,6 @@
 package org.proactiverobotics.engine.navigation;
 
+import java.lang.ref.WeakReference;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -124,42 +125,7 @@ public final class RoutePlanner {
 
         // Chamfer distance (3-4, in thirds of a cell) to the nearest occupied cell, capped.
         int cap = (int) Math.ceil((robotRadiusM + BODY_MARGIN_M + SOFT_ZONE_M) / c) * 3 + 4;
-        int[] dist = new int[n];
-        Arrays.fill(dist, cap);
-        // the occupied cells, chunk by chunk (a lookup per grid cell was two thirds of a mission's time)
-        map.forEachOccupied((i, j) -> {
-            int a = i - g.i0;
-            int b = j - g.j0;
-            if (a >= 0 && a < w && b >= 0 && b < h) {
-                dist[b * w + a] = 0;
-            }
-        });
-        for (int b = 0; b < h; b++) {
-            for (int a = 0; a < w; a++) {
-                int k = b * w + a;
-                int d = dist[k];
-                if (a > 0) d = Math.min(d, dist[k - 1] + 3);
-                if (b > 0) {
-                    d = Math.min(d, dist[k - w] + 3);
-                    if (a > 0) d = Math.min(d, dist[k - w - 1] + 4);
-                    if (a < w - 1) d = Math.min(d, dist[k - w + 1] + 4);
-                }
-                dist[k] = d;
-            }
-        }
-        for (int b = h - 1; b >= 0; b--) {
-            for (int a = w - 1; a >= 0; a--) {
-                int k = b * w + a;
-                int d = dist[k];
-                if (a < w - 1) d = Math.min(d, dist[k + 1] + 3);
-                if (b < h - 1) {
-                    d = Math.min(d, dist[k + w] + 3);
-                    if (a < w - 1) d = Math.min(d, dist[k + w + 1] + 4);
-                    if (a > 0) d = Math.min(d, dist[k + w - 1] + 4);
-                }
-                dist[k] = d;
-            }
-        }
+        int[] dist = distances(map, g, cap);
         double clear2 = START_CLEAR_M * START_CLEAR_M;
         int startCell = (sj - g.j0) * w + (si - g.i0);
         // near the start a cell is blocked only where the body would be tighter than it is already
@@ -261,6 +227,69 @@ public final class RoutePlanner {
         xs[m] = gx;
         ys[m] = gy;
         return shorten(g, xs, ys);
+    }
+
+    /** The last distances this thread worked out, for the next plan on the same map and area. */
+    private static final ThreadLocal<Distances> LAST_DISTANCES = new ThreadLocal<>();
+
+    /** Chamfer distances of one area of one map, at one version of its occupied cells. */
+    private record Distances(WeakReference<OccupancyMap> map, long version, int i0, int j0, int w, int h, int cap, int[] dist) {
+        boolean of(OccupancyMap m, Grid g, int capThirds) {
+            return map.get() == m && version == m.occupancyVersion() && i0 == g.i0 && j0 == g.j0 && w == g.w && h == g.h
+                    && cap == capThirds;
+        }
+    }
+
+    /**
+     * Each grid cell's chamfer distance (3-4, in thirds of a cell) to the nearest occupied cell,
+     * capped; the same as the last plan's, not worked out again, when neither the occupied cells
+     * nor the area changed (the two sweeps were most of a plan's time, JFR). Read only.
+     */
+    private static int[] distances(OccupancyMap map, Grid g, int cap) {
+        Distances last = LAST_DISTANCES.get();
+        if (last != null && last.of(map, g, cap)) {
+            return last.dist();
+        }
+        int w = g.w;
+        int h = g.h;
+        int[] dist = new int[w * h];
+        Arrays.fill(dist, cap);
+        // the occupied cells, chunk by chunk (a lookup per grid cell was two thirds of a mission's time)
+        map.forEachOccupied((i, j) -> {
+            int a = i - g.i0;
+            int b = j - g.j0;
+            if (a >= 0 && a < w && b >= 0 && b < h) {
+                dist[b * w + a] = 0;
+            }
+        });
+        for (int b = 0; b < h; b++) {
+            for (int a = 0; a < w; a++) {
+                int k = b * w + a;
+                int d = dist[k];
+                if (a > 0) d = Math.min(d, dist[k - 1] + 3);
+                if (b > 0) {
+                    d = Math.min(d, dist[k - w] + 3);
+                    if (a > 0) d = Math.min(d, dist[k - w - 1] + 4);
+                    if (a < w - 1) d = Math.min(d, dist[k - w + 1] + 4);
+                }
+                dist[k] = d;
+            }
+        }
+        for (int b = h - 1; b >= 0; b--) {
+            for (int a = w - 1; a >= 0; a--) {
+                int k = b * w + a;
+                int d = dist[k];
+                if (a < w - 1) d = Math.min(d, dist[k + 1] + 3);
+                if (b < h - 1) {
+                    d = Math.min(d, dist[k + w] + 3);
+                    if (a < w - 1) d = Math.min(d, dist[k + w + 1] + 4);
+                    if (a > 0) d = Math.min(d, dist[k + w - 1] + 4);
+                }
+                dist[k] = d;
+            }
+        }
+        LAST_DISTANCES.set(new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist));
+        return dist;
     }
 
     /** Keeps only the points a straight drive must pass through: from each kept point, the last one of the chain still in sight. */

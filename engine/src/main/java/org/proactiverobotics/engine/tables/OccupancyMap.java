@@ -41,6 +41,8 @@ public final class OccupancyMap {
     // Chunks in a dense row-major array over a rectangle of chunk indices that grows as the map
     // does: a lookup is an index, not a hash (Long keys hash to cx ^ cy, which collides along diagonals).
     private byte[][] chunks = new byte[0][];
+    /** Each chunk's occupied cells, indexed as {@link #chunks}: a search skips the chunks with none. */
+    private int[] occupiedIn = new int[0];
     /** The most chunks the array may span: a square of about 3 km on a side (128 MB of references at most). */
     private static final long MAX_CHUNKS = 1L << 24;
     private int originCx;
@@ -48,6 +50,8 @@ public final class OccupancyMap {
     private int columns;
     private int rows;
     private int stored;
+    /** Counts changes to which cells are occupied: equal counts, the same occupied cells. */
+    private long occupancyVersion;
     private final Set<Long> changed = new LinkedHashSet<>();
     private int minCx = Integer.MAX_VALUE;
     private int minCy = Integer.MAX_VALUE;
@@ -110,20 +114,37 @@ public final class OccupancyMap {
                         + CHUNK_CELLS * CELL_M + " m (more than " + MAX_CHUNKS + "): chunk (" + cx + ", " + cy + ") is too far away");
             }
             byte[][] grown = new byte[(int) size][];
+            int[] grownCounts = new int[(int) size];
             for (int b = 0; b < rows; b++) {
                 System.arraycopy(chunks, b * columns, grown, (originCy + b - loY) * w + originCx - loX, columns);
+                System.arraycopy(occupiedIn, b * columns, grownCounts, (originCy + b - loY) * w + originCx - loX, columns);
             }
             chunks = grown;
+            occupiedIn = grownCounts;
             originCx = loX;
             originCy = loY;
             columns = w;
             rows = hiY - loY + 1;
         }
         int at = (cy - originCy) * columns + cx - originCx;
-        if (chunks[at] == null) {
+        byte[] before = chunks[at];
+        if (before == null) {
             stored++;
         }
         chunks[at] = cells;
+        int occupied = 0;
+        boolean flipped = false;
+        for (int q = 0; q < cells.length; q++) {
+            boolean now = cells[q] >= OCCUPIED;
+            if (now) {
+                occupied++;
+            }
+            flipped |= now != (before != null && before[q] >= OCCUPIED);
+        }
+        occupiedIn[at] = occupied;
+        if (flipped) {
+            occupancyVersion++; // the map's rows are read again every iteration, mostly unchanged
+        }
         extend(cx, cy);
     }
 
@@ -247,6 +268,10 @@ public final class OccupancyMap {
         if (c[at] == state) {
             return false;
         }
+        if ((c[at] >= OCCUPIED) != (state >= OCCUPIED)) {
+            occupiedIn[(cy - originCy) * columns + cx - originCx] += state >= OCCUPIED ? 1 : -1;
+            occupancyVersion++;
+        }
         c[at] = state;
         changed.add(k);
         return true;
@@ -257,6 +282,11 @@ public final class OccupancyMap {
         minCy = Math.min(minCy, cy);
         maxCx = Math.max(maxCx, cx);
         maxCy = Math.max(maxCy, cy);
+    }
+
+    /** @return a count that changes whenever a cell becomes or stops being occupied (a cache's key) */
+    public long occupancyVersion() {
+        return occupancyVersion;
     }
 
     /** @return whether no chunk is stored */
@@ -295,12 +325,31 @@ public final class OccupancyMap {
         int i1 = cell(xM + radiusM);
         int j0 = cell(yM - radiusM);
         int j1 = cell(yM + radiusM);
+        if (!anyOccupied(i0, j0, i1, j1)) {
+            return false;
+        }
         double r2 = radiusM * radiusM;
         for (int j = j0; j <= j1; j++) {
             double dy = centre(j) - yM;
             for (int i = i0; i <= i1; i++) {
                 double dx = centre(i) - xM;
                 if (dx * dx + dy * dy <= r2 && get(i, j) == OCCUPIED) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /** @return whether a chunk overlapping the cells i0..i1 × j0..j1 (inclusive) holds an occupied cell */
+    private boolean anyOccupied(int i0, int j0, int i1, int j1) {
+        int a0 = Math.max(0, (i0 >> CHUNK_SHIFT) - originCx);
+        int a1 = Math.min(columns - 1, (i1 >> CHUNK_SHIFT) - originCx);
+        int b0 = Math.max(0, (j0 >> CHUNK_SHIFT) - originCy);
+        int b1 = Math.min(rows - 1, (j1 >> CHUNK_SHIFT) - originCy);
+        for (int b = b0; b <= b1; b++) {
+            for (int a = a0; a <= a1; a++) {
+                if (occupiedIn[b * columns + a] > 0) {
                     return true;
                 }
             }
@@ -323,6 +372,9 @@ public final class OccupancyMap {
         int i1 = cell(px + keepM);
         int j0 = cell(py - keepM);
         int j1 = cell(py + keepM);
+        if (!anyOccupied(i0, j0, i1, j1)) {
+            return false;
+        }
         double keep2 = keepM * keepM;
         for (int j = j0; j <= j1; j++) {
             double cy = centre(j);

@@ -69,4 +69,24 @@ class RouteFollowerTest {
         assertThat(follower.step(map, 0, 0, 2, 0, 0.1, RADIUS_M)).isEqualTo(RouteFollower.Status.NO_ROUTE);
         assertThat(follower.plansWithoutRoute()).isEqualTo(1);
     }
+
+    @Test
+    void thePlannerSeesEveryChangeToTheSameMapWhetherDrawnOrReadBackAsRows() {
+        OccupancyMap map = OccupancyMap.empty();
+        wall(map, 1.0, -0.6, 1.0);
+        Route before = RoutePlanner.plan(map, 0, 0, 2, 0, 0.1, RADIUS_M);
+        assertThat(RoutePlanner.plan(map, 0, 0, 2, 0, 0.1, RADIUS_M).lengthM()).as("the same map, the same route")
+                .isEqualTo(before.lengthM());
+        // the same object, the wall lengthened: a route planned on what the map was would cross it
+        OccupancyMap other = OccupancyMap.empty();
+        wall(other, 1.0, -2.5, 1.0);
+        map.putAll(other.takeChanged());
+        Route after = RoutePlanner.plan(map, 0, 0, 2, 0, 0.1, RADIUS_M);
+        assertThat(after.lengthM()).as("round the wall's upper end now, the farther").isGreaterThan(before.lengthM() + 0.2);
+        // cells cleared again: back to the first route
+        for (int j = OccupancyMap.cell(-2.5); j < OccupancyMap.cell(-0.6); j++) {
+            map.set(OccupancyMap.cell(1.0), j, OccupancyMap.FREE);
+        }
+        assertThat(RoutePlanner.plan(map, 0, 0, 2, 0, 0.1, RADIUS_M).lengthM()).isEqualTo(before.lengthM());
+    }
 }

@@ -93,4 +93,31 @@ class OccupancyMapTest {
         map.forEachOccupied((i, j) -> all.add(i + "," + j));
         assertThat(all).containsExactlyInAnyOrder("1,1", "5,5", "9,9");
     }
+
+    @Test
+    void aSearchFindsAnOccupiedCellOnlyWhileItIsOccupiedWhereverItsChunkCameFrom() {
+        OccupancyMap map = OccupancyMap.empty();
+        int i = OccupancyMap.cell(-3.01);
+        int j = OccupancyMap.cell(2.0);
+        assertThat(map.occupiedWithin(-3.0, 2.0, 0.2)).isFalse();
+        map.hit(i, j);
+        assertThat(map.occupiedWithin(-3.0, 2.0, 0.2)).isTrue();
+        assertThat(map.occupiedApproached(-3.5, 2.0, -3.0, 2.0, 0.2)).isTrue();
+        long version = map.occupancyVersion();
+        for (int pass = 0; pass < OccupancyMap.HIT / OccupancyMap.MISS; pass++) {
+            map.miss(i, j); // rays passing through take the one hit's evidence away
+        }
+        assertThat(map.occupiedWithin(-3.0, 2.0, 0.2)).isFalse();
+        assertThat(map.occupancyVersion()).isNotEqualTo(version);
+        // the same chunk read back as a row replaces it; unchanged rows leave the version alone
+        OccupancyMap writer = OccupancyMap.empty();
+        writer.hit(i, j);
+        List<MapChunk> rows = writer.takeChanged();
+        map.putAll(rows);
+        assertThat(map.occupiedWithin(-3.0, 2.0, 0.2)).isTrue();
+        version = map.occupancyVersion();
+        map.putAll(rows);
+        assertThat(map.occupancyVersion()).as("the same occupied cells").isEqualTo(version);
+        assertThat(map.occupiedWithin(-3.0, 2.0, 0.2)).isTrue();
+    }
 }
