@@ -12,6 +12,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.MultiRow;
 
 /**
  * Saves the engine state through JDBC in the tables {@code engine_state}, {@code engine_queue}
@@ -32,6 +33,8 @@ public final class JdbcStateStore implements StateStore {
     private final StateCodec codec;
     /** Per robot, "type NUL json" of each queue row as last committed; absent = unknown, read the table. */
     private final Map<Integer, List<String>> savedRows = new ConcurrentHashMap<>();
+    /** The queue rows' upsert in this database's words, chosen at the first save (two threads may both choose: the same). */
+    private volatile MultiRow upsertQueue;
 
     /** @param dataSource the database (a HikariCP pool, typically) */
     public JdbcStateStore(DataSource dataSource) {
@@ -199,43 +202,26 @@ public final class JdbcStateStore implements StateStore {
                 }
             }
         }
-        // Rows are rewritten in place (UPDATE is ~3x faster than DELETE + INSERT on H2); only the size change is inserted or deleted.
+        // Only the rows that differ from the saved ones are written, as one upsert (one statement on H2 and
+        // MariaDB alike, where a batch was a statement per row); only a shrink deletes.
         long saved = previous != null ? previous.size() : countQueueRows(c, robotId);
         List<String> rows = new ArrayList<>(nextQueue.size());
+        List<Object[]> changed = new ArrayList<>();
         int position = 0;
-        try (PreparedStatement update = c.prepareStatement(
-                "UPDATE engine_queue SET rule_type = ?, rule_json = ? WHERE robot_id = ? AND position = ?");
-             PreparedStatement insert = c.prepareStatement(
-                "INSERT INTO engine_queue (rule_type, rule_json, robot_id, position) VALUES (?, ?, ?, ?)")) {
-            int updates = 0;
-            int inserts = 0;
-            for (Rule rule : nextQueue) {
-                boolean inPlace = position < saved;
-                String type = codec.ruleType(rule);
-                String json = codec.ruleJson(rule);
-                String row = type + '\u0000' + json;
-                rows.add(row);
-                if (inPlace && previous != null && row.equals(previous.get(position))) {
-                    position++;
-                    continue; // this very row is already there
-                }
-                PreparedStatement ps = inPlace ? update : insert;
-                ps.setString(1, type);
-                ps.setString(2, json);
-                ps.setInt(3, robotId);
-                ps.setInt(4, position++);
-                ps.addBatch();
-                if (inPlace ? ++updates % BATCH == 0 : ++inserts % BATCH == 0) {
-                    ps.executeBatch(); // bounded batches keep a million-rule save from buffering it all
-                }
+        for (Rule rule : nextQueue) {
+            String type = codec.ruleType(rule);
+            String json = codec.ruleJson(rule);
+            String row = type + '\u0000' + json;
+            rows.add(row);
+            if (!(position < saved && previous != null && row.equals(previous.get(position)))) {
+                changed.add(new Object[] {robotId, position, type, json});
             }
-            if (updates % BATCH != 0) {
-                update.executeBatch();
-            }
-            if (inserts % BATCH != 0) {
-                insert.executeBatch();
+            position++;
+            if (changed.size() == MultiRow.MAX_ROWS) {
+                upsertQueueRows(c, changed); // bounded statements keep a million-rule save from buffering it all
             }
         }
+        upsertQueueRows(c, changed);
         if (saved > position) {
             try (PreparedStatement ps = c.prepareStatement("DELETE FROM engine_queue WHERE robot_id = ? AND position >= ?")) {
                 ps.setInt(1, robotId);
@@ -259,6 +245,27 @@ public final class JdbcStateStore implements StateStore {
             }
         }
         return rows;
+    }
+
+    private void upsertQueueRows(Connection c, List<Object[]> rows) throws SQLException {
+        if (rows.isEmpty()) {
+            return;
+        }
+        if (upsertQueue == null) {
+            upsertQueue = MultiRow.upsert(MultiRow.isH2(c), "engine_queue", List.of("robot_id", "position"),
+                    "robot_id", "position", "rule_type", "rule_json");
+        }
+        try (PreparedStatement ps = c.prepareStatement(upsertQueue.sql(rows.size()))) {
+            int p = 1;
+            for (Object[] row : rows) {
+                ps.setInt(p++, (Integer) row[0]);
+                ps.setInt(p++, (Integer) row[1]);
+                ps.setString(p++, (String) row[2]);
+                ps.setString(p++, (String) row[3]);
+            }
+            ps.executeUpdate();
+        }
+        rows.clear();
     }
 
     private static String cut(String s, int max) {

@@ -10,12 +10,13 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.MultiRow;
 import org.proactiverobotics.engine.IterationTransaction;
 
 /**
  * The engine side's tables over JDBC, for one robot. Every statement is plain SQL that H2
- * (MySQL mode), MariaDB and MySQL 8 all run (but the map's upsert, which H2 runs far faster in its
- * own words); every read goes through a {@code robot_id} index.
+ * (MySQL mode), MariaDB and MySQL 8 all run (upserts aside: {@link MultiRow} words them for each);
+ * every read goes through a {@code robot_id} index.
  *
  * <p>Over an {@link IterationTransaction}, during an iteration, the rules' reads are served from
  * an {@link IterationSnapshot} read in one query the first time a rule reads, the rules'
@@ -35,17 +36,13 @@ public final class JdbcRobotTables
     private final List<Object[]> pendingMarks = new ArrayList<>();
     private long snapshotLoads;
 
-    private static final String INSERT_REQUEST = "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)";
+    private static final MultiRow INSERT_REQUESTS = MultiRow.insert("sensor_requests", "robot_id", "sensor", "iteration");
     private static final String MARK_REACHED =
             "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?";
-    private static final String UPSERT_CHUNK = "INSERT INTO occupancy_map (robot_id, chunk_x, chunk_y, cells,"
-            + " updated_sim_time_ms) VALUES (?, ?, ?, ?, ?) ON DUPLICATE KEY UPDATE cells = VALUES(cells),"
-            + " updated_sim_time_ms = VALUES(updated_sim_time_ms)";
-    /** The same upsert in H2's own words. */
-    private static final String UPSERT_CHUNK_H2 = "MERGE INTO occupancy_map (robot_id, chunk_x, chunk_y, cells,"
-            + " updated_sim_time_ms) KEY (robot_id, chunk_x, chunk_y) VALUES (?, ?, ?, ?, ?)";
-    /** The chunk upsert this database takes, chosen at the first write. */
-    private String upsertChunkSql;
+    private static final String[] CHUNK_COLUMNS = {"robot_id", "chunk_x", "chunk_y", "cells", "updated_sim_time_ms"};
+    private static final List<String> CHUNK_KEY = List.of("robot_id", "chunk_x", "chunk_y");
+    /** The chunks' upsert in the words this database takes (H2 ran ON DUPLICATE KEY as a failed insert and a parsed update per row), chosen at the first write. */
+    private MultiRow upsertChunks;
     private static final String INSERT_COMMAND =
             "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)";
 
@@ -94,7 +91,7 @@ public final class JdbcRobotTables
     /** The iteration's writes, one batch per statement, just before its commit. */
     private void flush(Connection c) throws SQLException {
         try {
-            batch(c, INSERT_REQUEST, pendingRequests);
+            multiRow(c, INSERT_REQUESTS, pendingRequests);
             batch(c, MARK_REACHED, pendingMarks);
         } finally {
             forgetIteration();
@@ -105,6 +102,21 @@ public final class JdbcRobotTables
         pendingRequests.clear();
         pendingMarks.clear();
         snapshot = null;
+    }
+
+    /** The rows in as few statements as {@link MultiRow#MAX_ROWS} allows: one, nearly always. */
+    private static void multiRow(Connection c, MultiRow statement, List<Object[]> rows) throws SQLException {
+        for (int from = 0; from < rows.size(); from += MultiRow.MAX_ROWS) {
+            int n = Math.min(MultiRow.MAX_ROWS, rows.size() - from);
+            try (PreparedStatement ps = c.prepareStatement(statement.sql(n))) {
+                int p = 1;
+                for (Object[] row : rows.subList(from, from + n)) {
+                    bind(ps, p, row);
+                    p += row.length;
+                }
+                ps.executeUpdate();
+            }
+        }
     }
 
     private static void batch(Connection c, String sql, List<Object[]> rows) throws SQLException {
@@ -160,7 +172,7 @@ public final class JdbcRobotTables
         }
         String sql = "SELECT sim_time_ms, angle_rad, distance_m, range_m FROM distance_sensor_data"
                 + " WHERE robot_id = ? AND sim_time_ms = (SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ?"
-                + " ORDER BY robot_id DESC, id DESC LIMIT 1)"
+                + " ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1)"
                 + " ORDER BY sensor_index";
         try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {
             ps.setInt(1, robotId);
@@ -213,7 +225,7 @@ public final class JdbcRobotTables
         String sql = switch (sensor) {
             case GPS -> "SELECT sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
             case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
-            case DS -> "SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
+            case DS -> "SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1";
             case BATTERY -> "SELECT sim_time_ms FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
         };
         return queryOne("newest " + sensor + " time", sql, rs -> rs.getLong(1)).orElse(-1L);
@@ -338,22 +350,14 @@ public final class JdbcRobotTables
     }
 
     private void writeChunks(Connection c, List<MapChunk> chunks, long simTimeMs) throws SQLException {
-        if (upsertChunkSql == null) {
-            // H2 runs ON DUPLICATE KEY as a failed insert and a freshly parsed UPDATE per row (12 % of an H2 mission, JFR)
-            upsertChunkSql = "H2".equals(c.getMetaData().getDatabaseProductName()) ? UPSERT_CHUNK_H2 : UPSERT_CHUNK;
+        if (upsertChunks == null) {
+            upsertChunks = MultiRow.upsert(MultiRow.isH2(c), "occupancy_map", CHUNK_KEY, CHUNK_COLUMNS);
         }
-        // one upsert per chunk, sent as one batch: a driver that bulk-sends batches makes it one round trip
-        try (PreparedStatement upsert = c.prepareStatement(upsertChunkSql)) {
-            for (MapChunk chunk : chunks) {
-                upsert.setInt(1, robotId);
-                upsert.setInt(2, chunk.chunkX());
-                upsert.setInt(3, chunk.chunkY());
-                upsert.setBytes(4, chunk.cells());
-                upsert.setLong(5, simTimeMs);
-                upsert.addBatch();
-            }
-            upsert.executeBatch();
+        List<Object[]> rows = new ArrayList<>(chunks.size());
+        for (MapChunk chunk : chunks) {
+            rows.add(new Object[] {robotId, chunk.chunkX(), chunk.chunkY(), chunk.cells(), simTimeMs});
         }
+        multiRow(c, upsertChunks, rows);
     }
 
     @Override
@@ -394,7 +398,7 @@ public final class JdbcRobotTables
         Connection inIteration = transaction == null ? null : transaction.connection();
         if (inIteration != null) {
             try {
-                batch(inIteration, INSERT_REQUEST, pendingRequests); // the iteration's writes so far go first
+                multiRow(inIteration, INSERT_REQUESTS, pendingRequests); // the iteration's writes so far go first
                 batch(inIteration, MARK_REACHED, pendingMarks);
                 pendingRequests.clear();
                 pendingMarks.clear();

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.MultiRow;
 
 /**
  * {@link RobotLink} over JDBC and the tables of {@code schema.sql}; the same SQL runs on H2
@@ -28,12 +29,15 @@ public final class JdbcRobotLink implements RobotLink {
             "INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (?, ?, ?, ?)";
     private static final String INSERT_IU =
             "INSERT INTO iudata (robot_id, sim_time_ms, roll_rad, pitch_rad, yaw_rad) VALUES (?, ?, ?, ?, ?)";
-    private static final String INSERT_DS = "INSERT INTO distance_sensor_data "
-            + "(robot_id, sim_time_ms, sensor_index, angle_rad, distance_m, range_m) VALUES (?, ?, ?, ?, ?, ?)";
+    /** A scan's rows in one statement (a batch was a statement per row on H2, 21 a step). */
+    private static final MultiRow INSERT_DS = MultiRow.insert("distance_sensor_data",
+            "robot_id", "sim_time_ms", "sensor_index", "angle_rad", "distance_m", "range_m");
     private static final String INSERT_BATTERY =
             "INSERT INTO battery_level (robot_id, sim_time_ms, level_pct, charging) VALUES (?, ?, ?, ?)";
+    /** Marks the requests answered in one statement; {@link #markAnswered(int)} adds the ids' placeholders. */
     private static final String MARK_ANSWERED = "UPDATE sensor_requests SET answered_sim_time_ms = ? "
-            + "WHERE id = ? AND robot_id = ? AND answered_sim_time_ms IS NULL";
+            + "WHERE robot_id = ? AND answered_sim_time_ms IS NULL AND id IN (";
+    private static final String[] MARK_ANSWERED_BY_COUNT = new String[17];
     private static final String NEWEST_COMMAND = "SELECT id, iteration, sim_time_ms, scenario, command "
             + "FROM engine_comments WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
 
@@ -135,18 +139,20 @@ public final class JdbcRobotLink implements RobotLink {
                         ps.executeUpdate();
                     }
                 }
-                if (!answer.distances().isEmpty()) {
-                    try (PreparedStatement ps = prepare(c, INSERT_DS)) {
-                        for (DistanceReading d : answer.distances()) {
-                            ps.setInt(1, robotId);
-                            ps.setLong(2, t);
-                            ps.setInt(3, d.sensorIndex());
-                            ps.setDouble(4, d.angleRad());
-                            ps.setDouble(5, d.distanceM());
-                            ps.setDouble(6, d.rangeM());
-                            ps.addBatch();
+                List<DistanceReading> distances = answer.distances();
+                for (int from = 0; from < distances.size(); from += MultiRow.MAX_ROWS) {
+                    int rows = Math.min(MultiRow.MAX_ROWS, distances.size() - from);
+                    try (PreparedStatement ps = prepare(c, INSERT_DS.sql(rows))) {
+                        int p = 1;
+                        for (DistanceReading d : distances.subList(from, from + rows)) {
+                            ps.setInt(p++, robotId);
+                            ps.setLong(p++, t);
+                            ps.setInt(p++, d.sensorIndex());
+                            ps.setDouble(p++, d.angleRad());
+                            ps.setDouble(p++, d.distanceM());
+                            ps.setDouble(p++, d.rangeM());
                         }
-                        ps.executeBatch();
+                        ps.executeUpdate();
                     }
                 }
                 if (answer.battery() != null) {
@@ -155,15 +161,15 @@ public final class JdbcRobotLink implements RobotLink {
                         ps.executeUpdate();
                     }
                 }
-                if (answer.requestIds().length > 0) {
-                    try (PreparedStatement ps = prepare(c, MARK_ANSWERED)) {
-                        for (long id : answer.requestIds()) {
-                            ps.setLong(1, t);
-                            ps.setLong(2, id);
-                            ps.setInt(3, robotId);
-                            ps.addBatch();
+                long[] ids = answer.requestIds();
+                if (ids.length > 0) {
+                    try (PreparedStatement ps = prepare(c, markAnswered(ids.length))) {
+                        ps.setLong(1, t);
+                        ps.setInt(2, robotId);
+                        for (int k = 0; k < ids.length; k++) {
+                            ps.setLong(3 + k, ids[k]);
                         }
-                        ps.executeBatch();
+                        ps.executeUpdate();
                     }
                 }
                 c.commit();
@@ -371,6 +377,18 @@ public final class JdbcRobotLink implements RobotLink {
             ps.setQueryTimeout(queryTimeoutS);
         }
         return ps;
+    }
+
+    /** @return the statement marking that many requests answered */
+    private static String markAnswered(int ids) {
+        String s = ids < MARK_ANSWERED_BY_COUNT.length ? MARK_ANSWERED_BY_COUNT[ids] : null;
+        if (s == null) {
+            s = MARK_ANSWERED + "?" + ", ?".repeat(ids - 1) + ")";
+            if (ids < MARK_ANSWERED_BY_COUNT.length) {
+                MARK_ANSWERED_BY_COUNT[ids] = s;
+            }
+        }
+        return s;
     }
 
     private static void bindBattery(PreparedStatement ps, int robotId, long simTimeMs, BatteryReading reading)
