@@ -34,7 +34,7 @@ final class IterationSnapshot {
             + " FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1)"
             + " UNION ALL (SELECT 4, sim_time_ms, sensor_index, 0, angle_rad, distance_m, range_m, CAST(0 AS DOUBLE), '', ''"
             + " FROM distance_sensor_data WHERE robot_id = ? AND sim_time_ms = (SELECT sim_time_ms FROM distance_sensor_data"
-            + " WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1))"
+            + " WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1))"
             + " UNION ALL (SELECT 5, id, 0, 0, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), sensor, '' FROM sensor_requests"
             + " WHERE robot_id = ? AND answered_sim_time_ms IS NULL)"
             + " UNION ALL (SELECT 6, seq, CASE WHEN reached THEN 1 ELSE 0 END, CASE WHEN unreachable THEN 1 ELSE 0 END, x_m, y_m, radius_m, CAST(0 AS DOUBLE), '', ''"
