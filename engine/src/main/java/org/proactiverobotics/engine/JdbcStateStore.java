@@ -33,8 +33,8 @@ public final class JdbcStateStore implements StateStore {
     private final StateCodec codec;
     /** Per robot, "type NUL json" of each queue row as last committed; absent = unknown, read the table. */
     private final Map<Integer, List<String>> savedRows = new ConcurrentHashMap<>();
-    /** The queue rows' upsert in this database's words, chosen at the first save (two threads may both choose: the same). */
-    private volatile MultiRow upsertQueue;
+    private static final MultiRow UPSERT_QUEUE = MultiRow.upsert("engine_queue", List.of("robot_id", "position"),
+            "robot_id", "position", "rule_type", "rule_json");
 
     /** @param dataSource the database (a HikariCP pool, typically) */
     public JdbcStateStore(DataSource dataSource) {
@@ -206,7 +206,7 @@ public final class JdbcStateStore implements StateStore {
         // MariaDB alike, where a batch was a statement per row); only a shrink deletes.
         long saved = previous != null ? previous.size() : countQueueRows(c, robotId);
         List<String> rows = new ArrayList<>(nextQueue.size());
-        List<Object[]> changed = new ArrayList<>();
+        List<QueueRow> changed = new ArrayList<>();
         int position = 0;
         for (Rule rule : nextQueue) {
             String type = codec.ruleType(rule);
@@ -214,14 +214,17 @@ public final class JdbcStateStore implements StateStore {
             String row = type + '\u0000' + json;
             rows.add(row);
             if (!(position < saved && previous != null && row.equals(previous.get(position)))) {
-                changed.add(new Object[] {robotId, position, type, json});
+                changed.add(new QueueRow(position, type, json));
             }
             position++;
-            if (changed.size() == MultiRow.MAX_ROWS) {
-                upsertQueueRows(c, changed); // bounded statements keep a million-rule save from buffering it all
-            }
         }
-        upsertQueueRows(c, changed);
+        UPSERT_QUEUE.write(c, changed.size(), (ps, p, r) -> {
+            QueueRow q = changed.get(r);
+            ps.setInt(p, robotId);
+            ps.setInt(p + 1, q.position());
+            ps.setString(p + 2, q.type());
+            ps.setString(p + 3, q.json());
+        });
         if (saved > position) {
             try (PreparedStatement ps = c.prepareStatement("DELETE FROM engine_queue WHERE robot_id = ? AND position >= ?")) {
                 ps.setInt(1, robotId);
@@ -247,25 +250,8 @@ public final class JdbcStateStore implements StateStore {
         return rows;
     }
 
-    private void upsertQueueRows(Connection c, List<Object[]> rows) throws SQLException {
-        if (rows.isEmpty()) {
-            return;
-        }
-        if (upsertQueue == null) {
-            upsertQueue = MultiRow.upsert(MultiRow.isH2(c), "engine_queue", List.of("robot_id", "position"),
-                    "robot_id", "position", "rule_type", "rule_json");
-        }
-        try (PreparedStatement ps = c.prepareStatement(upsertQueue.sql(rows.size()))) {
-            int p = 1;
-            for (Object[] row : rows) {
-                ps.setInt(p++, (Integer) row[0]);
-                ps.setInt(p++, (Integer) row[1]);
-                ps.setString(p++, (String) row[2]);
-                ps.setString(p++, (String) row[3]);
-            }
-            ps.executeUpdate();
-        }
-        rows.clear();
+    /** A queue row to write: the rule at a position, by type and fields. */
+    private record QueueRow(int position, String type, String json) {
     }
 
     private static String cut(String s, int max) {

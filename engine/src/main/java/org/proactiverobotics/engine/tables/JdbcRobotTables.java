@@ -39,10 +39,8 @@ public final class JdbcRobotTables
     private static final MultiRow INSERT_REQUESTS = MultiRow.insert("sensor_requests", "robot_id", "sensor", "iteration");
     private static final String MARK_REACHED =
             "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?";
-    private static final String[] CHUNK_COLUMNS = {"robot_id", "chunk_x", "chunk_y", "cells", "updated_sim_time_ms"};
-    private static final List<String> CHUNK_KEY = List.of("robot_id", "chunk_x", "chunk_y");
-    /** The chunks' upsert in the words this database takes (H2 ran ON DUPLICATE KEY as a failed insert and a parsed update per row), chosen at the first write. */
-    private MultiRow upsertChunks;
+    private static final MultiRow UPSERT_CHUNKS = MultiRow.upsert("occupancy_map", List.of("robot_id", "chunk_x", "chunk_y"),
+            "robot_id", "chunk_x", "chunk_y", "cells", "updated_sim_time_ms");
     private static final String INSERT_COMMAND =
             "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)";
 
@@ -91,7 +89,7 @@ public final class JdbcRobotTables
     /** The iteration's writes, one batch per statement, just before its commit. */
     private void flush(Connection c) throws SQLException {
         try {
-            multiRow(c, INSERT_REQUESTS, pendingRequests);
+            insertRequests(c, pendingRequests);
             batch(c, MARK_REACHED, pendingMarks);
         } finally {
             forgetIteration();
@@ -104,19 +102,9 @@ public final class JdbcRobotTables
         snapshot = null;
     }
 
-    /** The rows in as few statements as {@link MultiRow#MAX_ROWS} allows: one, nearly always. */
-    private static void multiRow(Connection c, MultiRow statement, List<Object[]> rows) throws SQLException {
-        for (int from = 0; from < rows.size(); from += MultiRow.MAX_ROWS) {
-            int n = Math.min(MultiRow.MAX_ROWS, rows.size() - from);
-            try (PreparedStatement ps = c.prepareStatement(statement.sql(n))) {
-                int p = 1;
-                for (Object[] row : rows.subList(from, from + n)) {
-                    bind(ps, p, row);
-                    p += row.length;
-                }
-                ps.executeUpdate();
-            }
-        }
+    /** The iteration's requests, in one statement. */
+    private static void insertRequests(Connection c, List<Object[]> rows) throws SQLException {
+        INSERT_REQUESTS.write(c, rows.size(), (ps, p, r) -> bind(ps, p, rows.get(r)));
     }
 
     private static void batch(Connection c, String sql, List<Object[]> rows) throws SQLException {
@@ -350,14 +338,14 @@ public final class JdbcRobotTables
     }
 
     private void writeChunks(Connection c, List<MapChunk> chunks, long simTimeMs) throws SQLException {
-        if (upsertChunks == null) {
-            upsertChunks = MultiRow.upsert(MultiRow.isH2(c), "occupancy_map", CHUNK_KEY, CHUNK_COLUMNS);
-        }
-        List<Object[]> rows = new ArrayList<>(chunks.size());
-        for (MapChunk chunk : chunks) {
-            rows.add(new Object[] {robotId, chunk.chunkX(), chunk.chunkY(), chunk.cells(), simTimeMs});
-        }
-        multiRow(c, upsertChunks, rows);
+        UPSERT_CHUNKS.write(c, chunks.size(), (ps, p, r) -> {
+            MapChunk chunk = chunks.get(r);
+            ps.setInt(p, robotId);
+            ps.setInt(p + 1, chunk.chunkX());
+            ps.setInt(p + 2, chunk.chunkY());
+            ps.setBytes(p + 3, chunk.cells());
+            ps.setLong(p + 4, simTimeMs);
+        });
     }
 
     @Override
@@ -398,7 +386,7 @@ public final class JdbcRobotTables
         Connection inIteration = transaction == null ? null : transaction.connection();
         if (inIteration != null) {
             try {
-                multiRow(inIteration, INSERT_REQUESTS, pendingRequests); // the iteration's writes so far go first
+                insertRequests(inIteration, pendingRequests); // the iteration's writes so far go first
                 batch(inIteration, MARK_REACHED, pendingMarks);
                 pendingRequests.clear();
                 pendingMarks.clear();

@@ -140,21 +140,15 @@ public final class JdbcRobotLink implements RobotLink {
                     }
                 }
                 List<DistanceReading> distances = answer.distances();
-                for (int from = 0; from < distances.size(); from += MultiRow.MAX_ROWS) {
-                    int rows = Math.min(MultiRow.MAX_ROWS, distances.size() - from);
-                    try (PreparedStatement ps = prepare(c, INSERT_DS.sql(rows))) {
-                        int p = 1;
-                        for (DistanceReading d : distances.subList(from, from + rows)) {
-                            ps.setInt(p++, robotId);
-                            ps.setLong(p++, t);
-                            ps.setInt(p++, d.sensorIndex());
-                            ps.setDouble(p++, d.angleRad());
-                            ps.setDouble(p++, d.distanceM());
-                            ps.setDouble(p++, d.rangeM());
-                        }
-                        ps.executeUpdate();
-                    }
-                }
+                INSERT_DS.write(c, queryTimeoutS, distances.size(), (ps, p, r) -> {
+                    DistanceReading d = distances.get(r);
+                    ps.setInt(p, robotId);
+                    ps.setLong(p + 1, t);
+                    ps.setInt(p + 2, d.sensorIndex());
+                    ps.setDouble(p + 3, d.angleRad());
+                    ps.setDouble(p + 4, d.distanceM());
+                    ps.setDouble(p + 5, d.rangeM());
+                });
                 if (answer.battery() != null) {
                     try (PreparedStatement ps = prepare(c, INSERT_BATTERY)) {
                         bindBattery(ps, robotId, t, answer.battery());
