@@ -35,6 +35,7 @@ class DatabaseOutageReliabilityTest {
     private static final long WATCHDOG_MS = 1_000; // RobotConfig.defaults
     private static final long TIME_STEP_MS = 32;   // reference-arena
     private static final double MAX_SPEED_MPS = 0.5;
+    private static final long SETTLE_MS = 500;
 
     @TempDir
     Path tmp;
@@ -56,10 +57,12 @@ class DatabaseOutageReliabilityTest {
             Process robot = deployment.start("robot", robotOptions, robotLog);
 
             clocks.await("the robot 8 s into the mission", clocks::robotSimTimeMs, t -> t >= 8_000, robot, 120);
-            double[] before = newestGps(deployment);
             proxy.cut(OUTAGE);
             long cutAtSimMs = clocks.robotSimTimeMs();
-            Thread.sleep(OUTAGE.toMillis() + 200);
+            // The last position written before the cut: read once writes in flight at the reset have settled.
+            Thread.sleep(SETTLE_MS);
+            double[] before = newestGps(deployment);
+            Thread.sleep(OUTAGE.toMillis() - SETTLE_MS + 200);
             assertThat(proxy.refused()).as("connections refused during the outage").isPositive();
             assertThat(robot.isAlive()).as(Files.readString(robotLog)).isTrue();
             assertThat(engine.isAlive()).as(Files.readString(engineLog)).isTrue();
