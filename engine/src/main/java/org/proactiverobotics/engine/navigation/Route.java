@@ -4,10 +4,17 @@ package org.proactiverobotics.engine.navigation;
  * A planned route: waypoints from the start to the goal, each leg a straight drive. Plain arrays,
  * so a rule that follows a route saves it with its state.
  *
- * @param xs the waypoints' x, metres, from the start to the goal
- * @param ys their y, metres
+ * @param xs     the waypoints' x, metres, from the start to the goal
+ * @param ys     their y, metres
+ * @param slackM the room the route gives up against the planner's usual clearance, metres (0: none;
+ *               a tight route, through a gap the map shows narrower than it may be)
  */
-public record Route(double[] xs, double[] ys) {
+public record Route(double[] xs, double[] ys, double slackM) {
+
+    /** A route with the usual clearance. */
+    public Route(double[] xs, double[] ys) {
+        this(xs, ys, 0.0);
+    }
 
     /** @return the route's length, metres */
     public double lengthM() {

@@ -21,6 +21,20 @@ public final class RouteFollower {
     /** Near the robot a straight drive may pass this much closer to a wall than elsewhere, metres. */
     static final double NEAR_SLACK_M = RoutePlanner.SIGHT_MARGIN_M - RoutePlanner.BODY_MARGIN_M;
 
+    /** A follower of routes planned with unknown cells free. */
+    public RouteFollower() {
+    }
+
+    /**
+     * @return a follower of routes over the cells the rays have seen where there is one (else with
+     *         unknown cells free): a way back the robot knows it can drive, whose length the battery's promise counted
+     */
+    public static RouteFollower overSeenCells() {
+        RouteFollower f = new RouteFollower();
+        f.overSeen = true;
+        return f;
+    }
+
     /** What one call decided. */
     public enum Status {
         /** A target to drive at. */
@@ -34,6 +48,10 @@ public final class RouteFollower {
     private int sincePlan;
     /** Plans in a row that found no route. */
     private int plansWithoutRoute;
+    /** Whether routes keep to the cells the rays have seen ({@link RoutePlanner#planOverSeen}) where they can. */
+    private boolean overSeen;
+    /** The room the route gives up against the usual clearance, metres ({@link Route#slackM()}). */
+    private double slackM;
 
     /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
     private transient double[] legM;
@@ -56,12 +74,15 @@ public final class RouteFollower {
         double sightM = robotRadiusM + RoutePlanner.SIGHT_MARGIN_M;
         int nearest = xs == null ? -1 : nearest(x, y);
         boolean plan = xs == null || ++sincePlan >= REPLAN_EVERY
-                || blockedAhead(map, x, y, nearest, robotRadiusM)
+                || blockedAhead(map, x, y, nearest, robotRadiusM - slackM)
                 || !inSight(map, x, y, xs[Math.min(nearest + 1, xs.length - 1)], ys[Math.min(nearest + 1, xs.length - 1)], sightM)
                         && !inSight(map, x, y, xs[nearest], ys[nearest], sightM);
         if (plan) {
             sincePlan = 0;
-            Route route = RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
+            Route route = overSeen ? RoutePlanner.planOverSeen(map, x, y, goalX, goalY, goalReachM, robotRadiusM) : null;
+            if (route == null) {
+                route = RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
+            }
             if (route == null) {
                 plansWithoutRoute++;
                 xs = null;
@@ -71,6 +92,7 @@ public final class RouteFollower {
             plansWithoutRoute = 0;
             xs = route.xs();
             ys = route.ys();
+            slackM = route.slackM();
             legM = null;
             nearest = 0;
         }

@@ -33,6 +33,12 @@ public final class RoutePlanner {
     public static final double BODY_MARGIN_M = 0.02;
     /** Cells this close to the start are blocked only where the body would be tighter than at the start, metres. */
     public static final double START_CLEAR_M = 0.25;
+    /**
+     * Room given up when the usual room finds no route, metres: half a cell, what a route through
+     * cell centres loses against a drive between them (a gap whose sides noisy hits drew a little
+     * wider is otherwise closed to a planner the collision reflex would let through).
+     */
+    public static final double TIGHT_SLACK_M = OccupancyMap.CELL_M / 2;
 
     /** The blocked cells of one plan's area. */
     private static final class Grid {
@@ -45,6 +51,8 @@ public final class RoutePlanner {
         /** A cell's distance to the nearest occupied cell, metres (capped). */
         final float[] clearance;
         final int[] extra;
+        /** Cells never seen, for a plan over seen cells only (null: unknown cells are free). */
+        boolean[] unseen;
         /** The robot's radius plus {@value #SIGHT_MARGIN_M} m: a straight drive keeps this far from occupied cells. */
         double sightClearanceM;
 
@@ -67,7 +75,7 @@ public final class RoutePlanner {
                 return false;
             }
             int k = b * w + a;
-            return nearStart ? occupied[k] : clearance[k] < sightClearanceM;
+            return nearStart ? occupied[k] : clearance[k] < sightClearanceM || unseen != null && unseen[k];
         }
 
         /**
@@ -91,6 +99,9 @@ public final class RoutePlanner {
     }
 
     /**
+     * Plans a route with the body's usual room; when there is none, once more with
+     * {@value #TIGHT_SLACK_M} m less ({@link Route#slackM()}).
+     *
      * @param map           the map known so far
      * @param sx            start x, metres
      * @param sy            start y, metres
@@ -101,6 +112,25 @@ public final class RoutePlanner {
      * @return the route, or null when none exists even with every unknown cell free
      */
     public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM) {
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, false);
+    }
+
+    /**
+     * Plans a route over the cells the rays have seen only (unknown cells blocked), as {@link #plan}
+     * otherwise: a way the robot knows it can drive, such as the way back to a station it came from.
+     * Its length bounds the way from above, where {@link #plan}'s, through unknown cells, bounds it from below.
+     *
+     * @return the route, or null when the seen cells hold none
+     */
+    public static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                     double robotRadiusM) {
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true);
+    }
+
+    private static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                              double robotRadiusM, double slackM, boolean seenOnly) {
         double c = OccupancyMap.CELL_M;
         int margin = (int) Math.ceil(MARGIN_M / c);
         int si = OccupancyMap.cell(sx);
@@ -118,7 +148,7 @@ public final class RoutePlanner {
             hi_j = Math.max(hi_j, map.maxCellExclusive(false) - 1);
         }
         Grid g = new Grid(lo_i - margin, lo_j - margin, hi_i - lo_i + 1 + 2 * margin, hi_j - lo_j + 1 + 2 * margin);
-        g.sightClearanceM = robotRadiusM + SIGHT_MARGIN_M;
+        g.sightClearanceM = robotRadiusM + SIGHT_MARGIN_M; // a tight route keeps its cells where they are tight
         int w = g.w;
         int h = g.h;
         int n = w * h;
@@ -129,7 +159,7 @@ public final class RoutePlanner {
         double clear2 = START_CLEAR_M * START_CLEAR_M;
         int startCell = (sj - g.j0) * w + (si - g.i0);
         // near the start a cell is blocked only where the body would be tighter than it is already
-        double bodyM = robotRadiusM + BODY_MARGIN_M;
+        double bodyM = robotRadiusM + BODY_MARGIN_M - slackM;
         double startBlockM = Math.min(bodyM, dist[startCell] / 3.0 * c - OccupancyMap.CELL_M / 2);
         for (int b = 0; b < h; b++) {
             for (int a = 0; a < w; a++) {
@@ -142,6 +172,12 @@ public final class RoutePlanner {
                 if (dist[k] == 0 || dm < (nearStart ? startBlockM : bodyM)) {
                     g.blocked[k] = true; // occupied cells stay blocked even next to the start
                     g.occupied[k] = dist[k] == 0;
+                } else if (seenOnly && !nearStart && map.get(g.i0 + a, g.j0 + b) == OccupancyMap.UNKNOWN) {
+                    g.blocked[k] = true;
+                    if (g.unseen == null) {
+                        g.unseen = new boolean[n];
+                    }
+                    g.unseen[k] = true;
                 } else if (dm < bodyM + SOFT_ZONE_M) {
                     g.extra[k] = (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M));
                 }
@@ -226,7 +262,7 @@ public final class RoutePlanner {
         }
         xs[m] = gx;
         ys[m] = gy;
-        return shorten(g, xs, ys);
+        return shorten(g, xs, ys, slackM);
     }
 
     /** The last distances this thread worked out, for the next plan on the same map and area. */
@@ -293,7 +329,7 @@ public final class RoutePlanner {
     }
 
     /** Keeps only the points a straight drive must pass through: from each kept point, the last one of the chain still in sight. */
-    private static Route shorten(Grid g, double[] xs, double[] ys) {
+    private static Route shorten(Grid g, double[] xs, double[] ys, double slackM) {
         int n = xs.length;
         int[] kept = new int[n];
         int count = 0;
@@ -314,7 +350,7 @@ public final class RoutePlanner {
             rx[q] = xs[kept[q]];
             ry[q] = ys[kept[q]];
         }
-        return new Route(rx, ry);
+        return new Route(rx, ry, slackM);
     }
 
     private static int heuristic(int i, int j, int gi, int gj, int reachTenths) {

@@ -1,0 +1,80 @@
+package org.proactiverobotics.engine.navigation;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+
+import org.junit.jupiter.api.Test;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+
+/** The planner's gaps: a tight one taken with half a cell less, one narrower than the body kept closed; routes over seen cells only. */
+class RoutePlannerTest {
+
+    private static final double RADIUS_M = 0.12;
+    /** Half the side of the closed box the tests plan in, cells (1.5 m). */
+    private static final int BOX = 30;
+
+    /**
+     * A closed box with a wall across it at row 0 from the left side to column 0 and from column
+     * {@code gap} (on row {@code shift}) to the right side: one passage between the two ends.
+     */
+    private static OccupancyMap boxWithGap(int gap, int shift) {
+        OccupancyMap map = OccupancyMap.empty();
+        for (int t = -BOX; t <= BOX; t++) {
+            map.set(t, -BOX, OccupancyMap.OCCUPIED);
+            map.set(t, BOX, OccupancyMap.OCCUPIED);
+            map.set(-BOX, t, OccupancyMap.OCCUPIED);
+            map.set(BOX, t, OccupancyMap.OCCUPIED);
+        }
+        for (int i = -BOX; i <= 0; i++) {
+            map.set(i, 0, OccupancyMap.OCCUPIED);
+        }
+        for (int i = gap; i <= BOX; i++) {
+            map.set(i, shift, OccupancyMap.OCCUPIED);
+        }
+        for (int j = 0; j <= shift; j++) {
+            map.set(BOX, j, OccupancyMap.OCCUPIED);
+        }
+        return map;
+    }
+
+    private static Route across(OccupancyMap map, int gap) {
+        double x = OccupancyMap.centre(gap / 2);
+        return RoutePlanner.plan(map, x, -0.6, x, 0.7, 0.1, RADIUS_M);
+    }
+
+    @Test
+    void aDiagonalGapTheCellCentresMissButTheBodyFitsIsTakenWithHalfACellLess() {
+        // the ends' cell centres 0.29 m apart: the body and the reflex's margins need 0.28 m, but no
+        // cell centre between them lies 0.14 m from both
+        Route tight = across(boxWithGap(5, 3), 5);
+        assertThat(tight).isNotNull();
+        assertThat(tight.slackM()).isEqualTo(RoutePlanner.TIGHT_SLACK_M);
+        Route wider = across(boxWithGap(6, 3), 6);
+        assertThat(wider.slackM()).as("a gap a cell wider needs no slack").isZero();
+    }
+
+    @Test
+    void aGapNarrowerThanTheBodyStaysClosedEvenTight() {
+        assertThat(across(boxWithGap(5, 0), 5)).as("0.25 m between the cell centres, 0.24 m of body").isNull();
+    }
+
+    @Test
+    void overSeenCellsTheRouteKeepsToWhatTheRaysCrossed() {
+        OccupancyMap map = OccupancyMap.empty();
+        // seen: a band up from the start, across and down to the goal (0.4 m wide); the rest unknown
+        for (int i = -4; i <= 44; i++) {
+            for (int j = -4; j <= 24; j++) {
+                boolean band = i <= 4 || i >= 36 || j >= 16;
+                if (band) {
+                    map.set(i, j, OccupancyMap.FREE);
+                }
+            }
+        }
+        double gx = OccupancyMap.centre(40);
+        Route optimistic = RoutePlanner.plan(map, 0.0, 0.0, gx, 0.0, 0.1, RADIUS_M);
+        Route seen = RoutePlanner.planOverSeen(map, 0.0, 0.0, gx, 0.0, 0.1, RADIUS_M);
+        assertThat(optimistic.lengthM()).as("unknown cells free: straight").isCloseTo(gx, within(0.06));
+        assertThat(seen.lengthM()).as("up, across and down the seen band").isGreaterThan(optimistic.lengthM() + 1.0);
+        assertThat(RoutePlanner.planOverSeen(map, 0.0, 0.0, gx, -2.0, 0.1, RADIUS_M)).as("a goal in unseen space").isNull();
+    }
+}
