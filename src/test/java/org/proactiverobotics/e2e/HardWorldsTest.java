@@ -54,6 +54,22 @@ class HardWorldsTest {
               "battery": { "initial": 100.0, "drainPerMeter": 9.0, "rechargeRatePerS": 20.0 } }
             """;
 
+    /**
+     * The last checkpoint 2.7 m from the first in a straight line but behind a wall whose only gap
+     * is 3.5 m to the right, in space the robot has not seen; the station 3.2 m from the first
+     * checkpoint. 6 %/m: the way round (about 8 m) and the way back do not fit one charge, the way
+     * from the station to the last checkpoint does.
+     */
+    static final String LAST_BEHIND_WALL = """
+            { "name": "last-behind-wall", "maxSimTimeS": 400, "seed": 5,
+              "arena": { "radiusM": 4.0 },
+              "robot": { "x": 0.0, "y": -1.0, "headingDeg": 90.0 },
+              "obstacles": [ { "shape": "box", "x": -0.85, "y": 0.0, "widthM": 7.3, "heightM": 0.2 } ],
+              "checkpoints": [ { "x": 0.5, "y": -1.5 }, { "x": -1.5, "y": 1.0 } ],
+              "rechargeStation": { "x": -2.5, "y": -2.5, "radiusM": 0.35 },
+              "battery": { "initial": 100.0, "drainPerMeter": 6.0, "rechargeRatePerS": 20.0 } }
+            """;
+
     /** The fewest recharges TOUR can be done with: one before each of the three legs after the first. */
     static final int TOUR_MIN_RECHARGES = 3;
 
@@ -120,6 +136,22 @@ class HardWorldsTest {
         assertThat(report.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
         assertThat(report.recharges()).isBetween(TOUR_MIN_RECHARGES, TOUR_MIN_RECHARGES + 1);
         assertThat(report.minBattery()).isPositive();
+    }
+
+    /**
+     * The last leg runs past the point of no return into space the robot has not seen. Finishing
+     * is judged on the route to the checkpoint as planned (re-planned as walls appear), not the
+     * straight line (which let a robot explore a wall's wrong end until the battery was flat), and
+     * not only on seen cells (which turned the robot back at the same gap after every recharge:
+     * 10 recharges and TIME_LIMIT).
+     */
+    @Test
+    void aLastCheckpointBehindAWallIsReachedAfterOneRechargeNeverFlat() throws Exception {
+        MissionReport report = run(LAST_BEHIND_WALL);
+        assertThat(report.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
+        assertThat(report.recharges()).isEqualTo(1);
+        assertThat(report.minBattery()).isPositive();
+        assertThat(report.collisions()).isZero();
     }
 
     /** Dense clutter at 1.0 m/s; seed 4 clipped an obstacle with the fixed avoidance distances. */

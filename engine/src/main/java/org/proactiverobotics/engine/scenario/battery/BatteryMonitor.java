@@ -114,13 +114,29 @@ public final class BatteryMonitor extends Rule {
         if (wayBackM < 0 || drivenSincePlanM > REPLAN_AFTER_M || sincePlan >= REPLAN_EVERY) {
             OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
             double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
-            Route route = RoutePlanner.plan(map, position.xM(), position.yM(), station.xM(), station.yM(),
-                    station.radiusM() * MoveToRecharge.AT_STATION_FRACTION * 0.9, robotRadiusM);
+            double reachM = station.radiusM() * MoveToRecharge.AT_STATION_FRACTION * 0.9;
+            // the way MoveToRecharge would drive: over seen cells where they lead there
+            Route route = RoutePlanner.planOverSeen(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM, robotRadiusM);
+            if (route == null) {
+                route = RoutePlanner.plan(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM, robotRadiusM);
+            }
             wayBackM = route == null ? straightM : route.lengthM();
             drivenSincePlanM = 0;
             sincePlan = 0;
         }
         return Math.max(straightM, wayBackM + drivenSincePlanM);
+    }
+
+    /**
+     * @return the length of a route to a checkpoint over the cells the rays have seen, metres
+     *         (infinite when there is none: the way there is not known)
+     */
+    private double knownWayToM(RuleContext ctx, Checkpoint c) {
+        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
+        double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
+        Route route = RoutePlanner.plan(map, position.xM(), position.yM(), c.xM(), c.yM(),
+                c.radiusM() * 0.8 * 0.9, robotRadiusM);
+        return route == null ? Double.POSITIVE_INFINITY : Math.max(route.lengthM(), position.distanceTo(c.xM(), c.yM()));
     }
 
     /**
@@ -148,13 +164,15 @@ public final class BatteryMonitor extends Rule {
         double detour = drain.detour();
         double backPct = perMetre * detour * wayBackM(ctx) + RESERVE_PCT;
         boolean last = next.seq() == checkpoints.get(checkpoints.size() - 1).seq();
-        if (last && battery.levelPct() >= perMetre * detour * position.distanceTo(next.xM(), next.yM()) + RESERVE_PCT
-                && position.distanceTo(next.xM(), next.yM()) <= position.distanceTo(station.xM(), station.yM())) {
-            neededPct = Math.min(backPct, perMetre * detour * position.distanceTo(next.xM(), next.yM()) + RESERVE_PCT);
-            return false; // the last checkpoint is nearer than the station and within reach: finishing is the safer way
-        }
         neededPct = backPct;
         if (battery.levelPct() < backPct) {
+            if (last) {
+                double finishPct = perMetre * detour * knownWayToM(ctx, next) + RESERVE_PCT;
+                if (finishPct <= backPct && battery.levelPct() >= finishPct) {
+                    neededPct = finishPct;
+                    return false; // the last checkpoint is nearer than the station on a known way, and within reach: finishing is the safer way
+                }
+            }
             return true;
         }
         if (!drain.learnt() || next.seq() == committedSeq) {

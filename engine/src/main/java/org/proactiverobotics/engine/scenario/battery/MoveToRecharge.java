@@ -48,7 +48,7 @@ public final class MoveToRecharge extends Rule {
     private CollisionReflex reflex = new CollisionReflex();
     private ControlPeriod period = new ControlPeriod();
     /** The route to the station and its re-planning. */
-    private RouteFollower route = new RouteFollower();
+    private RouteFollower route = RouteFollower.overSeenCells();
     /** The planned way to the station when the trip began, metres (-1: not yet known). */
     private double tripPlannedM = -1;
     /** Distance driven on the trip so far, metres. */
