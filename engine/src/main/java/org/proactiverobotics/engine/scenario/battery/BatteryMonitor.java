@@ -23,10 +23,12 @@ import org.proactiverobotics.engine.tables.Station;
  * <ul>
  * <li><b>Point of no return</b>, always, whether or not the robot makes progress (lost, circling,
  * stuck on a wall): is there enough left to drive back to the station? The way back is the route
- * planned on the map known so far ({@link RoutePlanner}; between plans, the last plan plus what
- * has been driven since, which the robot could drive back), stretched by the detour factor (1.25
- * until a trip to the station has measured a longer one, see {@link DrainEstimate#detour()}),
- * plus a reserve.</li>
+ * planned over the cells the rays have seen ({@link RoutePlanner#planOverSeen}, the way
+ * MoveToRecharge drives; with unknown cells free only when the seen cells hold none; between
+ * plans, the last plan plus what has been driven since, which the robot could drive back),
+ * stretched by the detour factor (1.25 until a trip to the station has measured a longer one, see
+ * {@link DrainEstimate#detour()}), plus a reserve. On the last leg the robot goes on past it when
+ * the route planned to the last checkpoint is shorter than the way back and within reach.</li>
  * <li><b>The leg</b>: can the robot reach its next checkpoint and still get to the station from
  * there (for the last checkpoint: just reach it)? Checked only when a full charge could promise
  * the leg from the station (a recharge then helps), and not on the first leg after a recharge:
@@ -128,10 +130,10 @@ public final class BatteryMonitor extends Rule {
     }
 
     /**
-     * @return the length of a route to a checkpoint over the cells the rays have seen, metres
-     *         (infinite when there is none: the way there is not known)
+     * @return the length of the route planned to a checkpoint (unknown cells free, so it grows as
+     *         walls appear), at least the straight line, metres; infinite when there is none
      */
-    private double knownWayToM(RuleContext ctx, Checkpoint c) {
+    private double plannedWayToM(RuleContext ctx, Checkpoint c) {
         OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
         double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
         Route route = RoutePlanner.plan(map, position.xM(), position.yM(), c.xM(), c.yM(),
@@ -167,10 +169,10 @@ public final class BatteryMonitor extends Rule {
         neededPct = backPct;
         if (battery.levelPct() < backPct) {
             if (last) {
-                double finishPct = perMetre * detour * knownWayToM(ctx, next) + RESERVE_PCT;
+                double finishPct = perMetre * detour * plannedWayToM(ctx, next) + RESERVE_PCT;
                 if (finishPct <= backPct && battery.levelPct() >= finishPct) {
                     neededPct = finishPct;
-                    return false; // the last checkpoint is nearer than the station on a known way, and within reach: finishing is the safer way
+                    return false; // the last checkpoint is nearer than the station by route, and within reach: finishing is the safer way
                 }
             }
             return true;
