@@ -55,7 +55,7 @@ class HardWorldsTest {
             """;
 
     /**
-     * The last checkpoint 2.7 m from the first in a straight line but behind a wall whose only gap
+     * The last checkpoint 3.2 m from the first in a straight line but behind a wall whose only gap
      * is 3.5 m to the right, in space the robot has not seen; the station 3.2 m from the first
      * checkpoint. 6 %/m: the way round (about 8 m) and the way back do not fit one charge, the way
      * from the station to the last checkpoint does.

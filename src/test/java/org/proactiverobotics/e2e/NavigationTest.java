@@ -131,7 +131,7 @@ class NavigationTest {
      * Corridor worlds under small noise: a gap between a wall's end and the curved rim that the
      * noisy map drew a little narrower is taken with half a cell less room (before: 004 ended
      * CHECKPOINT_UNREACHABLE at 34 s), and the battery holds on the last leg, judged on the
-     * planned route and the way back over seen cells (013 and 020 ran flat exploring a wall's wrong
+     * planned route and the way back over seen cells (13, like 20, ran flat exploring a wall's wrong
      * end, taken for near by the straight line).
      */
     @ParameterizedTest(name = "corridors number {0}, small noise")

@@ -41,7 +41,7 @@ public final class WorldGenerator {
         /** A maze of corridors 2.5 to 3.2 robot diameters wide, checkpoints in far parts of it. */
         MAZE;
 
-        /** The tour's time limit is its planned path at top speed divided by this, plus charging and a margin. */
+        /** The tour's time limit is its planned path's time at top speed times this, plus charging and a margin. */
         private final int slowdown;
 
         Kind() {

@@ -52,6 +52,8 @@ public final class RouteFollower {
     private boolean overSeen;
     /** The room the route gives up against the usual clearance, metres ({@link Route#slackM()}). */
     private double slackM;
+    /** Whether the route is one over seen cells: then the robot aims only along seen cells too. */
+    private boolean seenRoute;
 
     /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
     private transient double[] legM;
@@ -75,11 +77,12 @@ public final class RouteFollower {
         int nearest = xs == null ? -1 : nearest(x, y);
         boolean plan = xs == null || ++sincePlan >= REPLAN_EVERY
                 || blockedAhead(map, x, y, nearest, robotRadiusM - slackM)
-                || !inSight(map, x, y, xs[Math.min(nearest + 1, xs.length - 1)], ys[Math.min(nearest + 1, xs.length - 1)], sightM)
-                        && !inSight(map, x, y, xs[nearest], ys[nearest], sightM);
+                || !inSight(map, x, y, xs[Math.min(nearest + 1, xs.length - 1)], ys[Math.min(nearest + 1, xs.length - 1)], sightM, seenRoute)
+                        && !inSight(map, x, y, xs[nearest], ys[nearest], sightM, seenRoute);
         if (plan) {
             sincePlan = 0;
             Route route = overSeen ? RoutePlanner.planOverSeen(map, x, y, goalX, goalY, goalReachM, robotRadiusM) : null;
+            seenRoute = route != null;
             if (route == null) {
                 route = RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
             }
@@ -87,6 +90,8 @@ public final class RouteFollower {
                 plansWithoutRoute++;
                 xs = null;
                 ys = null;
+                slackM = 0;
+                seenRoute = false;
                 return Status.NO_ROUTE;
             }
             plansWithoutRoute = 0;
@@ -96,7 +101,7 @@ public final class RouteFollower {
             legM = null;
             nearest = 0;
         }
-        if (inSight(map, x, y, goalX, goalY, sightM)) {
+        if (inSight(map, x, y, goalX, goalY, sightM, seenRoute)) {
             targetX = goalX;
             targetY = goalY;
             return Status.TARGET;
@@ -109,7 +114,7 @@ public final class RouteFollower {
             if (k > chosen && along > LOOKAHEAD_M) {
                 break;
             }
-            if (inSight(map, x, y, xs[k], ys[k], sightM)) {
+            if (inSight(map, x, y, xs[k], ys[k], sightM, seenRoute)) {
                 chosen = k;
             }
         }
@@ -193,8 +198,11 @@ public final class RouteFollower {
         return Math.hypot(ax + t * dx - px, ay + t * dy - py);
     }
 
-    /** Whether an occupied cell lies within the robot's radius of the route ahead (the robot's own surroundings aside). */
-    private boolean blockedAhead(OccupancyMap map, double x, double y, int nearest, double robotRadiusM) {
+    /**
+     * Whether an occupied cell lies within the body's radius (the robot's, less a tight route's slack)
+     * plus the planner's margin of the route ahead (the robot's own surroundings aside).
+     */
+    private boolean blockedAhead(OccupancyMap map, double x, double y, int nearest, double bodyRadiusM) {
         double checked = 0;
         double step = OccupancyMap.CELL_M / 2;
         double[] legs = legs();
@@ -204,7 +212,7 @@ public final class RouteFollower {
             for (int q = 0; q <= n; q++) {
                 double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
                 double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
-                if (beyond(px - x, py - y, RoutePlanner.START_CLEAR_M) && map.occupiedWithin(px, py, robotRadiusM + RoutePlanner.BODY_MARGIN_M)) {
+                if (beyond(px - x, py - y, RoutePlanner.START_CLEAR_M) && map.occupiedWithin(px, py, bodyRadiusM + RoutePlanner.BODY_MARGIN_M)) {
                     return true;
                 }
             }
@@ -219,6 +227,11 @@ public final class RouteFollower {
      * to count, and a little less room will do (as the collision reflex allows).
      */
     static boolean inSight(OccupancyMap map, double x0, double y0, double x1, double y1, double clearM) {
+        return inSight(map, x0, y0, x1, y1, clearM, false);
+    }
+
+    /** As {@link #inSight(OccupancyMap, double, double, double, double, double)}; with {@code seenOnly}, every cell on the way must have been seen. */
+    static boolean inSight(OccupancyMap map, double x0, double y0, double x1, double y1, double clearM, boolean seenOnly) {
         double len = Math.hypot(x1 - x0, y1 - y0);
         int n = (int) Math.ceil(len / (OccupancyMap.CELL_M / 2));
         for (int k = 1; k <= n; k++) {
@@ -228,6 +241,9 @@ public final class RouteFollower {
             if (t * len < RoutePlanner.START_CLEAR_M
                     ? map.occupiedApproached(x0, y0, px, py, clearM - NEAR_SLACK_M)
                     : map.occupiedWithin(px, py, clearM)) {
+                return false;
+            }
+            if (seenOnly && map.get(OccupancyMap.cell(px), OccupancyMap.cell(py)) == OccupancyMap.UNKNOWN) {
                 return false;
             }
         }

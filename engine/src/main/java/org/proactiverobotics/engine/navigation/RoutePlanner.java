@@ -7,7 +7,7 @@ import java.util.List;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
 /**
- * A* on the occupancy map known so far, unknown cells taken as free, on the robot's footprint:
+ * A* on the occupancy map known so far, unknown cells taken as free ({@link #planOverSeen}: blocked), on the robot's footprint:
  * a cell whose centre lies closer than the robot's radius to an occupied cell's centre is
  * blocked, and cells up to {@value #SOFT_ZONE_M} m beyond cost more, so routes keep off walls
  * where they can. The search covers the known map, the robot and the goal, with
@@ -15,6 +15,7 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * where the body would be tighter than it is at the start (the robot may already be close to a wall). The cell chain found is shortened to the waypoints
  * a straight drive can join (each leg keeps {@value #SIGHT_MARGIN_M} m more than the robot's radius
  * from occupied cells), so a route is a few points, small enough to save with the rule that follows it.
+ * When the usual room finds no route, the plan is tried once more with {@value #TIGHT_SLACK_M} m less.
  */
 public final class RoutePlanner {
 
@@ -109,7 +110,7 @@ public final class RoutePlanner {
      * @param gy            goal y, metres
      * @param goalReachM    any cell centre this close to the goal will do, metres
      * @param robotRadiusM  the robot's radius, metres
-     * @return the route, or null when none exists even with every unknown cell free
+     * @return the route, or null when none exists even with every unknown cell free and half a cell less room
      */
     public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM) {
         Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false);
@@ -117,16 +118,37 @@ public final class RoutePlanner {
     }
 
     /**
-     * Plans a route over the cells the rays have seen only (unknown cells blocked), as {@link #plan}
-     * otherwise: a way the robot knows it can drive, such as the way back to a station it came from.
-     * Its length bounds the way from above, where {@link #plan}'s, through unknown cells, bounds it from below.
+     * Plans a route whose cell chain keeps to the cells the rays have seen (unknown cells blocked for
+     * the body's centre; its straight legs keep to seen cells too), as {@link #plan} otherwise: a way
+     * the rays have shown open, such as the way back to a station the robot came from. Its length is
+     * the better bound of the way from above, where {@link #plan}'s, through unknown cells, bounds it from below.
      *
-     * @return the route, or null when the seen cells hold none
+     * @return the route, or null when the seen cells hold none (at once when no cell near the goal was seen)
      */
     public static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
                                      double robotRadiusM) {
+        if (!seenNear(map, gx, gy, goalReachM)) {
+            return null; // no search: a failed one covers every seen cell (the profile put it at 40 % of a mission)
+        }
         Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true);
         return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true);
+    }
+
+    /** Whether a cell whose centre lies within {@code reachM} of a point (or the point's own cell) has been seen. */
+    private static boolean seenNear(OccupancyMap map, double x, double y, double reachM) {
+        int r = (int) Math.ceil(reachM / OccupancyMap.CELL_M);
+        int ci = OccupancyMap.cell(x);
+        int cj = OccupancyMap.cell(y);
+        for (int j = cj - r; j <= cj + r; j++) {
+            for (int i = ci - r; i <= ci + r; i++) {
+                boolean near = i == ci && j == cj
+                        || Math.hypot(OccupancyMap.centre(i) - x, OccupancyMap.centre(j) - y) <= reachM;
+                if (near && map.get(i, j) == OccupancyMap.FREE) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     private static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,

@@ -89,4 +89,25 @@ class RouteFollowerTest {
         }
         assertThat(RoutePlanner.plan(map, 0, 0, 2, 0, 0.1, RADIUS_M).lengthM()).isEqualTo(before.lengthM());
     }
+
+    @Test
+    void aFollowerOverSeenCellsAimsOnlyAlongSeenCells() {
+        OccupancyMap map = OccupancyMap.empty();
+        // seen: a band up from the start, across and down to the goal; between, nothing seen
+        for (int i = -4; i <= 44; i++) {
+            for (int j = -4; j <= 24; j++) {
+                if (i <= 4 || i >= 36 || j >= 16) {
+                    map.set(i, j, OccupancyMap.FREE);
+                }
+            }
+        }
+        double gx = OccupancyMap.centre(40);
+        RouteFollower optimistic = new RouteFollower();
+        optimistic.step(map, 0.0, 0.0, gx, 0.0, 0.1, RADIUS_M);
+        assertThat(optimistic.targetX()).as("unknown cells free: straight at the goal").isEqualTo(gx);
+        RouteFollower seen = RouteFollower.overSeenCells();
+        assertThat(seen.step(map, 0.0, 0.0, gx, 0.0, 0.1, RADIUS_M)).isEqualTo(RouteFollower.Status.TARGET);
+        assertThat(seen.targetY()).as("up the seen band first, not across unseen cells").isGreaterThan(0.5);
+        assertThat(seen.remainingM(0.0, 0.0, gx, 0.0)).isGreaterThan(gx + 1.0);
+    }
 }

@@ -31,9 +31,6 @@ class RoutePlannerTest {
         for (int i = gap; i <= BOX; i++) {
             map.set(i, shift, OccupancyMap.OCCUPIED);
         }
-        for (int j = 0; j <= shift; j++) {
-            map.set(BOX, j, OccupancyMap.OCCUPIED);
-        }
         return map;
     }
 
@@ -61,7 +58,7 @@ class RoutePlannerTest {
     @Test
     void overSeenCellsTheRouteKeepsToWhatTheRaysCrossed() {
         OccupancyMap map = OccupancyMap.empty();
-        // seen: a band up from the start, across and down to the goal (0.4 m wide); the rest unknown
+        // seen: a band up from the start, across and down to the goal (0.45 m wide); the rest unknown
         for (int i = -4; i <= 44; i++) {
             for (int j = -4; j <= 24; j++) {
                 boolean band = i <= 4 || i >= 36 || j >= 16;

@@ -58,6 +58,8 @@ public final class BatteryMonitor extends Rule {
     private double drivenSincePlanM;
     /** Iterations since the way back was planned. */
     private int sincePlan;
+    /** The route to the last checkpoint planned with the way back, metres (-1: none planned since). */
+    private double finishM = -1;
 
     private transient GpsFix position;
     private transient BatteryState battery;
@@ -123,6 +125,7 @@ public final class BatteryMonitor extends Rule {
                 route = RoutePlanner.plan(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM, robotRadiusM);
             }
             wayBackM = route == null ? straightM : route.lengthM();
+            finishM = -1;
             drivenSincePlanM = 0;
             sincePlan = 0;
         }
@@ -130,15 +133,19 @@ public final class BatteryMonitor extends Rule {
     }
 
     /**
-     * @return the length of the route planned to a checkpoint (unknown cells free, so it grows as
-     *         walls appear), at least the straight line, metres; infinite when there is none
+     * @return the route planned to a checkpoint (unknown cells free, so it grows as walls appear),
+     *         at least the straight line, metres; infinite when there is none. Planned on the way
+     *         back's schedule ({@link #wayBackM}), and in between that plan plus what has been driven since
      */
     private double plannedWayToM(RuleContext ctx, Checkpoint c) {
-        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
-        double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
-        Route route = RoutePlanner.plan(map, position.xM(), position.yM(), c.xM(), c.yM(),
-                c.radiusM() * 0.8 * 0.9, robotRadiusM);
-        return route == null ? Double.POSITIVE_INFINITY : Math.max(route.lengthM(), position.distanceTo(c.xM(), c.yM()));
+        if (finishM < 0) {
+            OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
+            double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
+            // reached a little inside its radius, as ReachDestination counts it
+            Route route = RoutePlanner.plan(map, position.xM(), position.yM(), c.xM(), c.yM(), c.radiusM() * 0.8 * 0.9, robotRadiusM);
+            finishM = route == null ? Double.POSITIVE_INFINITY : route.lengthM() - drivenSincePlanM;
+        }
+        return Math.max(finishM + drivenSincePlanM, position.distanceTo(c.xM(), c.yM()));
     }
 
     /**

@@ -17,8 +17,8 @@ final class DrainEstimate {
     static final double LEARN_AFTER_M = 1.0;
 
     /**
-     * The detour assumed for a way not yet driven: the route is planned with unknown cells free, and
-     * walls found on the way lengthen it.
+     * The detour assumed for a way not yet driven: the route may cross cells no ray has seen (when the
+     * seen ones hold none, it is planned with unknown cells free), and walls found on the way lengthen it.
      */
     static final double MIN_DETOUR = 1.25;
     /** A trip this much longer than its planned way was a robot lost on the way, not a measure of the world. */

@@ -22,7 +22,8 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * Drives to the recharge station, asks for RECHARGE there until the battery is back at the
  * battery_recharged level, then generates a new BatteryMonitor (which keeps what was learnt).
  * Steers like MoveToCheckpoint, as in the paper: along a route planned on the map known so far
- * ({@link RouteFollower}, re-planned as walls appear), with the shared collision reflex
+ * ({@link RouteFollower}, re-planned as walls appear), over the cells the rays have seen where they
+ * lead to the station (the way BatteryMonitor counted), with the shared collision reflex
  * ({@link CollisionReflex}, its distances derived from the robot's speed and body) beneath, so that
  * a recharge is safe under any strategy, even one that ranks it above obstacle avoidance. It measures how much
  * longer than the planned way the way driven to the station was ({@link DrainEstimate#trip}).

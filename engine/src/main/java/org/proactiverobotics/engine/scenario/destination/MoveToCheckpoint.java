@@ -25,7 +25,7 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  */
 public final class MoveToCheckpoint extends Rule {
 
-    /** Counts as reached a little inside the checkpoint's radius, so the simulator agrees. */
+    /** Counts as reached a little inside the checkpoint's radius (this share of it), so the simulator agrees. */
     static final double REACHED_FRACTION = 0.8;
     /** How long no plan finds a route before the checkpoint is declared unreachable, simulated ms. */
     static final long NO_ROUTE_MS = 3_000;

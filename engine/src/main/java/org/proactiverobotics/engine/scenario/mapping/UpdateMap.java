@@ -149,7 +149,7 @@ public final class UpdateMap extends Rule {
         double nextY = dy == 0 ? Double.POSITIVE_INFINITY : ((sj > 0 ? (j + 1) * c : j * c) - y0) / dy;
         int guard = Math.abs(ei - i) + Math.abs(ej - j) + 2;
         // a hit's last few centimetres may lie inside the wall (a reading a little long): not cleared
-        double keepFrom = hit ? 1.0 - UNCLEARED_M / Math.hypot(dx, dy) : 2.0;
+        double keepFrom = hit ? 1.0 - UNCLEARED_M / Math.hypot(dx, dy) : Double.POSITIVE_INFINITY;
         double entered = 0.0;
         while ((i != ei || j != ej) && guard-- > 0) {
             if (entered < keepFrom) {
