@@ -31,6 +31,21 @@ class UrlHandlingTest extends CommandLineTest {
         assertThat(tmp.resolve("never")).doesNotExist();
     }
 
+    /** An H2 file URL as a user writes it, without MySQL mode: the settings the schema needs are added. */
+    @Test
+    void aPlainH2FileUrlKeepsTheMissionInThatFile() throws Exception {
+        String url = "jdbc:h2:" + tmp.resolve("mission").toAbsolutePath();
+        assertThat(run("run", "--db", url, "--world", "reference-arena", "--quiet", "--out", tmp.resolve("out").toString()))
+                .as(err.toString()).isZero();
+        try (java.sql.Connection c = java.sql.DriverManager.getConnection(url + ";MODE=MySQL;DATABASE_TO_LOWER=TRUE");
+             java.sql.ResultSet rs = c.createStatement().executeQuery(
+                     "SELECT (SELECT COUNT(*) FROM checkpoints), (SELECT COUNT(*) FROM gps_stored_values)")) {
+            assertThat(rs.next()).isTrue();
+            assertThat(rs.getInt(1)).as("the mission's checkpoints are in the file").isEqualTo(4);
+            assertThat(rs.getInt(2)).as("and the robot's readings").isGreaterThan(1000);
+        }
+    }
+
     @Test
     void aPasswordInTheUrlIsNeverPrinted() throws Exception {
         int port;

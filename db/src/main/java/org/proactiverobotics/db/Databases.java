@@ -2,6 +2,7 @@ package org.proactiverobotics.db;
 
 import com.zaxxer.hikari.HikariConfig;
 import com.zaxxer.hikari.HikariDataSource;
+import java.util.Locale;
 
 /**
  * Builds the connection pools both sides use: HikariCP over any JDBC URL (embedded H2 in MySQL
@@ -18,6 +19,29 @@ public final class Databases {
     public static final String H2_MYSQL_MODE = ";MODE=MySQL;DATABASE_TO_LOWER=TRUE;DB_CLOSE_DELAY=-1;QUERY_CACHE_SIZE=256";
 
     private Databases() {
+    }
+
+    /**
+     * An H2 URL with the settings of {@link #H2_MYSQL_MODE} it does not give itself appended (a
+     * user's {@code jdbc:h2:/path/mission} then takes schema.sql instead of failing on its first
+     * MySQL word); any other URL as it is.
+     *
+     * @param jdbcUrl a JDBC URL
+     * @return the URL to connect with
+     */
+    public static String withDialect(String jdbcUrl) {
+        if (!jdbcUrl.startsWith("jdbc:h2:")) {
+            return jdbcUrl;
+        }
+        String upper = jdbcUrl.toUpperCase(Locale.ROOT);
+        StringBuilder url = new StringBuilder(jdbcUrl);
+        for (String setting : H2_MYSQL_MODE.substring(1).split(";")) {
+            String key = setting.substring(0, setting.indexOf('=') + 1).toUpperCase(Locale.ROOT);
+            if (!upper.contains(";" + key)) {
+                url.append(';').append(setting);
+            }
+        }
+        return url.toString();
     }
 
     /**
@@ -58,7 +82,7 @@ public final class Databases {
      */
     public static HikariConfig config(String jdbcUrl, String user, String password) {
         HikariConfig config = new HikariConfig();
-        config.setJdbcUrl(jdbcUrl);
+        config.setJdbcUrl(withDialect(jdbcUrl));
         if (user != null) {
             config.setUsername(user);
         }

@@ -6,6 +6,7 @@ import java.sql.SQLException;
 import java.util.Properties;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import org.proactiverobotics.db.Databases;
 import picocli.CommandLine.Option;
 
 /**
@@ -93,7 +94,7 @@ public final class DbOptions {
         if (url.startsWith("jdbc:mariadb:") || url.startsWith("jdbc:mysql:")) {
             props.setProperty("connectTimeout", "5000"); // ms, both drivers: an unreachable host must not hang an attempt
         }
-        return DriverManager.getConnection(url, props);
+        return DriverManager.getConnection(Databases.withDialect(url), props);
     }
 
     /** @return the JDBC URL */
