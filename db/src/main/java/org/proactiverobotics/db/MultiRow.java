@@ -5,6 +5,7 @@ import java.sql.PreparedStatement;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
+import org.h2.jdbc.JdbcConnection;
 
 /**
  * One statement for many rows of one table: {@code INSERT ... VALUES (?, ?), (?, ?), ...}, or the
@@ -108,12 +109,13 @@ public final class MultiRow {
     }
 
     /**
-     * @param c a connection
+     * @param c a connection (a pool's proxy too)
      * @return whether it is to H2
      * @throws SQLException when the connection cannot say
      */
     public static boolean isH2(Connection c) throws SQLException {
-        return "H2".equals(c.getMetaData().getDatabaseProductName());
+        // a class check through the pool's proxy: asked on every upsert, where metadata was an object a call
+        return c.isWrapperFor(JdbcConnection.class);
     }
 
     /**
