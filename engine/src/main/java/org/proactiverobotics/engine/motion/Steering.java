@@ -20,6 +20,8 @@ public final class Steering {
     private static final double MAX_TURN_RAD_S = 2.5;
     /** Beyond this heading error the robot turns on the spot instead of driving on. */
     private static final double TURN_ON_SPOT_RAD = Math.toRadians(60);
+    /** A target this close to straight behind is turned to on the side last turned to, degrees. */
+    private static final double BEHIND_DEG = 20;
     /** Speed per metre left to the target, 1/s: slows down on arrival. */
     private static final double ARRIVAL_GAIN = 0.8;
     /** Lowest forward speed while arriving, m/s, so the robot never stalls short of the target. */
@@ -48,6 +50,39 @@ public final class Steering {
         double speed = Math.abs(error) > TURN_ON_SPOT_RAD ? 0.0 : profile.maxSpeedMps() * Math.cos(error);
         speed = Math.min(speed, Math.max(MIN_ARRIVAL_SPEED, ARRIVAL_GAIN * Math.hypot(dx, dy)));
         return drive(speed, turn, profile);
+    }
+
+    /**
+     * As {@link #goTo(double, double, double, double, double, DriveProfile)}, for a caller that keeps
+     * the side it last turned to: a target within {@value #BEHIND_DEG}° of straight behind is turned
+     * to on that side. A command acts a step after the heading it was worked out from, so with a
+     * target at ±180° the side flipped every step and the robot rocked on the spot for good (rooms,
+     * seed 17, radius 0.2 m, number 12).
+     *
+     * @param behindSide the side of the last turn, +1 left, -1 right, 0 none ({@link #turnSide})
+     * @return a DRIVE command
+     */
+    public static String goTo(double xM, double yM, double yawRad, double targetX, double targetY, DriveProfile profile,
+                              int behindSide) {
+        double error = error(xM, yM, yawRad, targetX, targetY, behindSide);
+        double turn = clamp(TURN_GAIN * error, MAX_TURN_RAD_S);
+        double speed = Math.abs(error) > TURN_ON_SPOT_RAD ? 0.0 : profile.maxSpeedMps() * Math.cos(error);
+        speed = Math.min(speed, Math.max(MIN_ARRIVAL_SPEED, ARRIVAL_GAIN * Math.hypot(targetX - xM, targetY - yM)));
+        return drive(speed, turn, profile);
+    }
+
+    /** @return the side {@link #goTo(double, double, double, double, double, DriveProfile, int)} turns to, +1 left, -1 right */
+    public static int turnSide(double xM, double yM, double yawRad, double targetX, double targetY, int behindSide) {
+        return error(xM, yM, yawRad, targetX, targetY, behindSide) >= 0 ? +1 : -1;
+    }
+
+    /** The heading error to a target, radians; near ±π on the side given (when not 0). */
+    private static double error(double xM, double yM, double yawRad, double targetX, double targetY, int behindSide) {
+        double error = wrap(Math.atan2(targetY - yM, targetX - xM) - yawRad);
+        if (behindSide != 0 && Math.abs(error) > Math.PI - Math.toRadians(BEHIND_DEG)) {
+            error = behindSide * Math.abs(error);
+        }
+        return error;
     }
 
     /**

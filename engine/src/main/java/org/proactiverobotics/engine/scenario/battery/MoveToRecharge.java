@@ -50,6 +50,8 @@ public final class MoveToRecharge extends Rule {
     private ControlPeriod period = new ControlPeriod();
     /** The route to the station and its re-planning. */
     private RouteFollower route = RouteFollower.overSeenCells();
+    /** The side the robot last turned to, +1 left, -1 right, 0 none: kept for a target straight behind. */
+    private int behindSide;
     /** The planned way to the station when the trip began, metres (-1: not yet known). */
     private double tripPlannedM = -1;
     /** Distance driven on the trip so far, metres. */
@@ -131,7 +133,8 @@ public final class MoveToRecharge extends Rule {
         if (tripPlannedM < 0) {
             tripPlannedM = route.remainingM(position.xM(), position.yM(), xM, yM);
         }
-        String command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), aimX, aimY, profile);
+        behindSide = Steering.turnSide(position.xM(), position.yM(), heading.yawRad(), aimX, aimY, behindSide);
+        String command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), aimX, aimY, profile, behindSide);
         if (scan != null) {
             if (Math.abs(heading.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
                 command = Steering.STOP; // the distance readings lag: never drive blind

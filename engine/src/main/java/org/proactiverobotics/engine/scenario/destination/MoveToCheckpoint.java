@@ -36,6 +36,8 @@ public final class MoveToCheckpoint extends Rule {
     private double radiusM;
     /** The route and its re-planning (saved with the rule). */
     private RouteFollower route = new RouteFollower();
+    /** The side the robot last turned to, +1 left, -1 right, 0 none: kept for a target straight behind. */
+    private int behindSide;
     /** The simulated time since which no plan has found a route, ms (-1: the last plan found one). */
     private long noRouteSinceMs = -1;
 
@@ -110,7 +112,8 @@ public final class MoveToCheckpoint extends Rule {
             return;
         }
         noRouteSinceMs = -1;
-        ctx.suggest(Steering.goTo(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), profile));
+        behindSide = Steering.turnSide(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), behindSide);
+        ctx.suggest(Steering.goTo(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), profile, behindSide));
     }
 
     @Override
