@@ -9,16 +9,18 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * command the robot is about to drive and speaks only when that command would bring the body
  * into something within its braking reach; otherwise it lets the command go, so the scenarios
  * that find the way (which plan on the map) drive everywhere, doorways and narrow corridors
- * included. The body is a disc, so turning on the spot sweeps nothing new: a vetoed command is
- * replaced by a turn on the spot in the direction it wanted to turn (toward the freer side when it
- * wanted none, kept until the way is clear, so the robot does not dither between two sides).
+ * included. A vetoed command is replaced by the forward arc nearest to it that keeps the body
+ * clear over cells the rays have seen free (so the robot slips past a door jamb or a pillar), else
+ * by a turn on the spot, which sweeps nothing new for a disc, in the direction it wanted to turn
+ * (toward the freer side when it wanted none, kept until the way is clear, so the robot does not
+ * dither between two sides).
  * The reach is the distance covered at the command's speed while a reading is answered, decided
  * and acted on, plus the time to stop ({@link Clearance#imminentM()}, from the robot's speed,
  * control period and sensor range), plus {@value #SIDE_MARGIN_M} m.
  *
  * <p>The command's arc is checked against the points the rays hit now and in the last
  * {@value #MEMORY_MS} ms, placed by the GPS and inertial-unit readings (a short memory, as a
- * robot's local costmap keeps): eight rays leave gaps at the flanks, and a pillar or a wall's
+ * robot's local costmap keeps): a few rays leave gaps at the flanks, and a pillar or a wall's
  * corner seen a moment ago is still there when it slips between two rays. Plain fields, so it is
  * saved with the rule that holds it.
  */
@@ -42,10 +44,16 @@ public final class CollisionReflex {
     static final double BACK_SPEED = 0.3;
     /** Backing off checks this far behind, metres. */
     static final double BACK_REACH_M = 0.1;
-    /** A flank reading this close, metres from the rim, guards that side (8 rays cannot see the wall between). */
+    /** A flank reading this close, metres from the rim, guards that side (a ray set with wide gaps cannot see the wall between). */
     static final double FLANK_GUARD_M = 0.06;
     /** Turning toward a guarded flank faster than this is vetoed, radians per second. */
     static final double FLANK_TURN_RAD_S = 0.2;
+    /** Arcs tried on each side of a vetoed command's turn before a turn on the spot. */
+    static final int AROUND_ARCS = 6;
+    /** Turn-rate step between the arcs tried, radians per second. */
+    static final double AROUND_STEP_RAD_S = 0.4;
+    /** Top speed of an arc the command did not ask for, as a share of the robot's top speed. */
+    static final double AROUND_SPEED = 0.5;
     /** Turn rate of a turn on the spot, radians per second. */
     private static final double TURN_RAD_S = 1.8;
     private static final double DEG = Math.PI / 180;
@@ -133,6 +141,10 @@ public final class CollisionReflex {
             vetoes = 0;
             return null;
         }
+        String around = aroundArc(s, map, xM, yM, yawRad, radiusM, profile, c, speed, turnRate, guarded);
+        if (around != null) {
+            return around;
+        }
         if (++vetoes >= STUCK_VETOES) {
             vetoes = 0; // the way it wants stays blocked however it turns: back off a little, then let it try again
             backing = BACK_ITERATIONS;
@@ -149,6 +161,59 @@ public final class CollisionReflex {
             }
         }
         return Steering.drive(0.0, turning * TURN_RAD_S, profile);
+    }
+
+    /**
+     * The forward arc nearest the command's turn that keeps the body clear, over cells the rays
+     * have seen (an arc the command did not ask for must not sweep a corner that slipped between
+     * two rays): the body slips past a door jamb or between two pillars instead of turning on the
+     * spot back and forth, as the route keeps asking for the way the reflex refuses. Null when none.
+     */
+    private String aroundArc(DistanceScan s, OccupancyMap map, double xM, double yM, double yawRad, double radiusM,
+                             DriveProfile profile, Clearance c, double speed, double turnRate, int guarded) {
+        if (map == null) {
+            return null;
+        }
+        double v = Math.min(speed, AROUND_SPEED * profile.maxSpeedMps());
+        double reachM = c.imminentM() * v / profile.maxSpeedMps() + SIDE_MARGIN_M;
+        double keep = radiusM + SIDE_MARGIN_M;
+        int first = s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
+        if (guarded != 0) {
+            first = -guarded;
+        }
+        for (int k = 1; k <= AROUND_ARCS; k++) {
+            for (int q = 0; q < 2; q++) {
+                int side = q == 0 ? first : -first;
+                double w = turnRate + side * k * AROUND_STEP_RAD_S;
+                if (guarded != 0 && w * guarded > FLANK_TURN_RAD_S) {
+                    continue; // not toward the flank that is guarded
+                }
+                if (!hitsWithin(map, xM, yM, yawRad, radiusM, v, w, reachM)
+                        && !unseenWithin(map, xM, yM, yawRad, keep, v, w, reachM)) {
+                    return Steering.drive(v, w, profile);
+                }
+            }
+        }
+        return null;
+    }
+
+    /** Whether the body, driven along an arc for {@code reachM}, comes within {@code keep} of a cell the rays never saw. */
+    private static boolean unseenWithin(OccupancyMap map, double xM, double yM, double yawRad, double keep,
+                                        double speed, double turnRate, double reachM) {
+        int steps = (int) Math.ceil(reachM / ARC_STEP_M);
+        double perStepRad = turnRate / speed * ARC_STEP_M;
+        double px = xM;
+        double py = yM;
+        double heading = yawRad;
+        for (int q = 1; q <= steps; q++) {
+            heading += perStepRad;
+            px += ARC_STEP_M * Math.cos(heading);
+            py += ARC_STEP_M * Math.sin(heading);
+            if (map.unknownApproached(xM, yM, px, py, keep)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** One step of backing off straight, or null (and no more backing) when something is behind too. */

@@ -391,6 +391,31 @@ public final class OccupancyMap {
     }
 
     /**
+     * As {@link #occupiedApproached} for the cells the rays never saw.
+     *
+     * @return whether a never-seen cell's centre lies within {@code keepM} of the point and closer to it than to where the body is
+     */
+    public boolean unknownApproached(double fromX, double fromY, double px, double py, double keepM) {
+        int i0 = cell(px - keepM);
+        int i1 = cell(px + keepM);
+        int j0 = cell(py - keepM);
+        int j1 = cell(py + keepM);
+        double keep2 = keepM * keepM;
+        for (int j = j0; j <= j1; j++) {
+            double cy = centre(j);
+            for (int i = i0; i <= i1; i++) {
+                double cx = centre(i);
+                double d2 = (cx - px) * (cx - px) + (cy - py) * (cy - py);
+                if (d2 < keep2 && d2 < (cx - fromX) * (cx - fromX) + (cy - fromY) * (cy - fromY) - 1e-6
+                        && get(i, j) == UNKNOWN) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /**
      * Merges stored chunks into the map, replacing those at the same place (nothing marked changed).
      *
      * @param rows the chunks read

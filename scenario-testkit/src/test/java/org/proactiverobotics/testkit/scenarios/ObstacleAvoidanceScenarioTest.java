@@ -10,6 +10,7 @@ import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.Scenario;
 import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
+import org.proactiverobotics.engine.scenario.mapping.MappingScenario;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.testkit.ScenarioKit;
 
@@ -60,6 +61,18 @@ class ObstacleAvoidanceScenarioTest {
         driverCommand = command;
         return ScenarioKit.builder().scenario(new Driver()).builtIn(AVOIDANCE)
                 .strategyJson("{\"priorities\": {\"ObstacleAvoidance\": 2, \"Driver\": 1}}").start();
+    }
+
+    /** A kit that also maps, the robot first turned once round on the spot with every ray free (the map sees round it). */
+    private static ScenarioKit mappedKit(String command) {
+        driverCommand = command;
+        ScenarioKit kit = ScenarioKit.builder().scenario(new Driver()).builtIn(AVOIDANCE, MappingScenario.NAME)
+                .strategyJson("{\"priorities\": {\"ObstacleAvoidance\": 2, \"Driver\": 1}}").start();
+        for (int deg = 0; deg < 360; deg += 10) {
+            kit.robot().gps(0, 0).headingDeg(deg).scan(FREE, FREE, FREE, FREE, FREE, FREE, FREE, FREE);
+            kit.step();
+        }
+        return kit;
     }
 
     private static double[] wheels(String command) {
@@ -137,6 +150,29 @@ class ObstacleAvoidanceScenarioTest {
             kit.robot().scan(FREE, FREE, FREE, 0.4, 0.4, FREE, FREE, FREE);
             kit.step();
             assertThat(kit.suggestion(AVOIDANCE)).isNull();
+        }
+    }
+
+    @Test
+    void overCellsTheRaysHaveSeenFreeAVetoedCommandBecomesTheNearestArcThatClearsTheObstacle() {
+        try (ScenarioKit kit = mappedKit("DRIVE 0.5000 0.5000")) {
+            // a post 0.1 m ahead and to the right (the -20° ray): straight on hits it, curving left slips past
+            kit.robot().gps(0, 0).headingDeg(0).scan(FREE, FREE, 0.10, FREE, FREE, FREE, FREE, FREE);
+            kit.step();
+            double[] w = wheels(kit.suggestion(AVOIDANCE));
+            assertThat(w[0]).as("still driving forward, not turning on the spot").isPositive();
+            assertThat(w[1]).as("curving left, away from the post").isGreaterThan(w[0]);
+        }
+    }
+
+    @Test
+    void overCellsNoRayHasSeenAVetoedCommandIsStillATurnOnTheSpot() {
+        try (ScenarioKit kit = kit("DRIVE 0.5000 0.5000")) {
+            // the same post, but the robot has mapped nothing: an arc it was not asked for could meet an unseen corner
+            kit.robot().gps(0, 0).headingDeg(0).scan(FREE, FREE, 0.10, FREE, FREE, FREE, FREE, FREE);
+            kit.step();
+            double[] w = wheels(kit.suggestion(AVOIDANCE));
+            assertThat(w[0] + w[1]).as("a turn on the spot").isCloseTo(0.0, Offset.offset(1e-9));
         }
     }
 
