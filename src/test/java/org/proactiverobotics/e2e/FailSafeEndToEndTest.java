@@ -18,12 +18,12 @@ class FailSafeEndToEndTest {
 
     @Test
     void obstacleAvoidanceFailingNearAnObstacleSendsNoAvoidanceCommandStopsTheRobotAndComesBack() throws Exception {
-        double failFromS = 8.0; // the collision monitor first vetoes a command at 8.256 s, before the first obstacle
-        double failUntilS = 9.0;
+        double failFromS = 31.36; // (a step's time) the collision monitor vetoes commands from 31.488 s to 32.416 s, at the obstacle across the path
+        double failUntilS = 31.9;
         AtomicBoolean failing = new AtomicBoolean();
         FaultInjection fault = new FaultInjection(ObstacleAvoidanceScenario.class, failing::get);
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
-            Missions.Run run = Missions.run("reference-arena", db, Strategy.SAFETY_FIRST,
+            Missions.Run run = Missions.run("obstacle-across-path", db, Strategy.SAFETY_FIRST,
                     sim -> failing.set(sim.simTimeS() >= failFromS && sim.simTimeS() < failUntilS), fault);
             MissionReport report = run.report();
 

@@ -86,13 +86,13 @@ class MissionEndToEndTest {
 
     @Test
     void aStrategyChangedWhileRunningDecidesTheNextIterations() throws Exception {
-        double switchAtS = 8.2; // under safety-first the collision monitor vetoes the destination's command at 8.256 s
-        double switchBackAtS = 11.0;
+        double switchAtS = 31.4; // under safety-first the collision monitor vetoes the destination's commands from 31.488 s
+        double switchBackAtS = 34.0;
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             JdbcRobotTables strategyFromOutside = new JdbcRobotTables(db.dataSource(), 1);
             AtomicBoolean switched = new AtomicBoolean();
             AtomicBoolean switchedBack = new AtomicBoolean();
-            Missions.Run run = Missions.run("reference-arena", db, Strategy.SAFETY_FIRST, sim -> {
+            Missions.Run run = Missions.run("obstacle-across-path", db, Strategy.SAFETY_FIRST, sim -> {
                 if (!switched.get() && sim.simTimeS() >= switchAtS) {
                     switched.set(true);
                     strategyFromOutside.write(Strategy.named(Strategy.DESTINATION_FIRST).rows(RobotEngine.freshSlots(ScenarioPlugins.none())));

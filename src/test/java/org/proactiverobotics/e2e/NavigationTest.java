@@ -147,7 +147,7 @@ class NavigationTest {
     /**
      * Larger robots (0.2 m and 0.3 m radius, generated with a scanner's fan of rays) among pillars,
      * in rooms and in clutter, with small noise: accomplished, never touching anything (with the
-     * default eight rays a 0.3 m robot met a thin pillar straight ahead, between its ±8° rays).
+     * eight rays of earlier versions a 0.3 m robot met a thin pillar straight ahead, between its ±8° rays).
      */
     @ParameterizedTest(name = "{0} number {2}, radius {1} m, small noise")
     @CsvSource({"pillars, 0.3, 6", "pillars, 0.3, 9", "pillars, 0.2, 4", "rooms, 0.3, 2", "cluttered, 0.3, 5"})

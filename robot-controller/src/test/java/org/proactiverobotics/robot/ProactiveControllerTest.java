@@ -24,6 +24,9 @@ import org.slf4j.LoggerFactory;
 
 class ProactiveControllerTest {
 
+    /** The default robot's distance rays: a row each per scan. */
+    private static final long RAYS = org.proactiverobotics.sim2d.WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.size();
+
     private static final int ROBOT = 7;
     private static final RobotConfig CONFIG = RobotConfig.defaults(ROBOT).withWatchdogTimeoutMs(320)
             .withRealTimeFactor(0).withRetention(RetentionPolicy.KEEP_ALL);
@@ -343,7 +346,7 @@ class ProactiveControllerTest {
                 assertThat(engine.count("gps_stored_values")).isBetween(20L, 30L);
                 assertThat(engine.count("iudata")).isBetween(20L, 30L);
                 assertThat(engine.count("battery_level")).isBetween(20L, 31L);
-                assertThat(engine.count("distance_sensor_data")).isBetween(20L * 8, 30L * 8);
+                assertThat(engine.count("distance_sensor_data")).isBetween(20L * RAYS, 30L * RAYS);
                 assertThat(engine.count("sensor_requests")).as("the engine's table: not pruned by the robot")
                         .isGreaterThanOrEqualTo(1200L);
                 assertThat(robot.stats().rowsPruned()).isGreaterThan(0);

@@ -105,15 +105,18 @@ public record WorldSpec(
         public static final double DEFAULT_MAX_SPEED_MPS = 0.5;
         /** Default {@code sensorRangeM}. */
         public static final double DEFAULT_SENSOR_RANGE_M = 1.0;
-        /** Default {@code sensorAnglesDeg}: eight rays, front-heavy, covering both sides. */
-        public static final List<Double> DEFAULT_SENSOR_ANGLES_DEG = List.of(-90.0, -45.0, -20.0, -8.0, 8.0, 20.0, 45.0, 90.0);
+        /**
+         * Default {@code sensorAnglesDeg}: twelve rays, front-heavy, covering both sides, no more than 20°
+         * apart (with eight, 45° apart at the flanks, a wall's end between them was unseen until a turning body touched it).
+         */
+        public static final List<Double> DEFAULT_SENSOR_ANGLES_DEG = List.of(-90.0, -70.0, -50.0, -35.0, -20.0, -8.0, 8.0, 20.0, 35.0, 50.0, 70.0, 90.0);
 
         /** Keeps an unmodifiable copy of the angles. */
         public Robot {
             sensorAnglesDeg = List.copyOf(sensorAnglesDeg);
         }
 
-        /** A robot with the default eight distance sensors. */
+        /** A robot with the default distance sensors. */
         public Robot(double x, double y, double headingDeg, double radiusM, double maxSpeedMps, double sensorRangeM) {
             this(x, y, headingDeg, radiusM, maxSpeedMps, sensorRangeM, DEFAULT_SENSOR_ANGLES_DEG);
         }

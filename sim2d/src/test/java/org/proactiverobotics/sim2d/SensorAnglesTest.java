@@ -25,10 +25,11 @@ class SensorAnglesTest {
     }
 
     @Test
-    void withoutTheKeyTheRobotHasTheEightRaysOfBefore() {
+    void withoutTheKeyTheRobotHasTheDefaultTwelveRays() {
         WorldSpec w = WorldFiles.parse(world(""));
-        assertThat(w.robot().sensorAnglesDeg()).containsExactly(-90.0, -45.0, -20.0, -8.0, 8.0, 20.0, 45.0, 90.0);
-        assertThat(new Simulation(w).robot().distanceSensors()).hasSize(8);
+        assertThat(w.robot().sensorAnglesDeg())
+                .containsExactly(-90.0, -70.0, -50.0, -35.0, -20.0, -8.0, 8.0, 20.0, 35.0, 50.0, 70.0, 90.0);
+        assertThat(new Simulation(w).robot().distanceSensors()).hasSize(12);
     }
 
     @Test

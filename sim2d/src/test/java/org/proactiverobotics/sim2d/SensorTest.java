@@ -9,7 +9,10 @@ import org.junit.jupiter.api.Test;
 
 class SensorTest {
 
-    /** Sensor 4 looks 8° left of the heading; heading -8° makes it look along +x. */
+    /** The default sensor that looks 8° left of the heading; heading -8° makes it look along +x. */
+    private static final int FRONT = WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.indexOf(8.0);
+    /** The default sensor that looks 90° left. */
+    private static final int LEFT = WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.indexOf(90.0);
     private static final double ALONG_X = -8.0;
 
     private static WorldSpec wallAhead(double faceX) {
@@ -22,9 +25,9 @@ class SensorTest {
     void defaultSensorsCoverFrontAndSides() {
         Simulation sim = new Simulation(Worlds.empty(5.0, 0.0, 0.0, 0.0));
         List<DistanceSensor> ds = sim.robot().distanceSensors();
-        assertThat(ds).hasSize(8);
+        assertThat(ds).hasSize(12);
         assertThat(ds.get(0).getAngleRad()).isEqualTo(-Math.PI / 2);
-        assertThat(ds.get(7).getAngleRad()).isEqualTo(Math.PI / 2);
+        assertThat(ds.get(LEFT).getAngleRad()).isEqualTo(Math.PI / 2);
         for (int i = 0; i < ds.size(); i++) {
             assertThat(ds.get(i).getIndex()).isEqualTo(i);
             assertThat(ds.get(i).getRangeM()).isEqualTo(1.0);
@@ -35,17 +38,17 @@ class SensorTest {
     void obstacleAtAKnownDistanceReadsThatDistance() {
         Simulation sim = new Simulation(wallAhead(0.8));
         // From the rim: 0.8 m to the face minus the 0.12 m radius.
-        assertThat(sim.robot().distanceSensors().get(4).getValue()).isCloseTo(0.68, within(1e-9));
+        assertThat(sim.robot().distanceSensors().get(FRONT).getValue()).isCloseTo(0.68, within(1e-9));
     }
 
     @Test
     void arenaWallAtAKnownDistanceReadsThatDistance() {
         Simulation sim = new Simulation(Worlds.empty(5.0, 4.0, 0.0, ALONG_X));
-        assertThat(sim.robot().distanceSensors().get(4).getValue()).isCloseTo(0.88, within(1e-6));
+        assertThat(sim.robot().distanceSensors().get(FRONT).getValue()).isCloseTo(0.88, within(1e-6));
         // The wall is a ring of boxes; anywhere along it the polygon stays within 2 mm of the circle.
         Simulation diagonal = new Simulation(Worlds.empty(5.0, 2.8, 2.8, 45.0 + ALONG_X));
         double expected = 5.0 - Math.hypot(2.8, 2.8) - 0.12;
-        assertThat(diagonal.robot().distanceSensors().get(4).getValue()).isCloseTo(expected, within(0.002));
+        assertThat(diagonal.robot().distanceSensors().get(FRONT).getValue()).isCloseTo(expected, within(0.002));
     }
 
     @Test
@@ -56,17 +59,17 @@ class SensorTest {
         }
         // Just beyond range from the rim: 0.12 + 1.0 + 0.05.
         Simulation far = new Simulation(wallAhead(1.17));
-        assertThat(far.robot().distanceSensors().get(4).getValue()).isEqualTo(1.0);
+        assertThat(far.robot().distanceSensors().get(FRONT).getValue()).isEqualTo(1.0);
         Simulation near = new Simulation(wallAhead(1.07));
-        assertThat(near.robot().distanceSensors().get(4).getValue()).isCloseTo(0.95, within(1e-9));
+        assertThat(near.robot().distanceSensors().get(FRONT).getValue()).isCloseTo(0.95, within(1e-9));
     }
 
     @Test
     void sideSensorsSeeSideObstacles() {
-        // Robot facing +y; a circle 0.5 m to its left (-x) reads on the +90° sensor (index 7).
+        // Robot facing +y; a circle 0.5 m to its left (-x) reads on the +90° sensor.
         Simulation sim = new Simulation(Worlds.empty(5.0, 0.0, 0.0, 90.0)
                 .withObstacles(List.of(WorldSpec.Obstacle.circle(-0.8, 0.0, 0.2))));
-        assertThat(sim.robot().distanceSensors().get(7).getValue()).isCloseTo(0.48, within(1e-9));
+        assertThat(sim.robot().distanceSensors().get(LEFT).getValue()).isCloseTo(0.48, within(1e-9));
         assertThat(sim.robot().distanceSensors().get(0).getValue()).isEqualTo(1.0);
     }
 
@@ -74,9 +77,9 @@ class SensorTest {
     void readingsFollowTheRobotAfterEachStep() {
         Simulation sim = new Simulation(wallAhead(0.8));
         sim.robot().setWheelSpeeds(0.25, 0.25);
-        double before = sim.robot().distanceSensors().get(4).getValue();
+        double before = sim.robot().distanceSensors().get(FRONT).getValue();
         sim.step();
-        double after = sim.robot().distanceSensors().get(4).getValue();
+        double after = sim.robot().distanceSensors().get(FRONT).getValue();
         // Moving 8 mm along a heading of -8° brings the rim 8·cos 8° mm closer to the face.
         assertThat(before - after).isCloseTo(0.008 * Math.cos(Math.toRadians(8)), within(1e-9));
     }
@@ -91,7 +94,7 @@ class SensorTest {
         boolean differs = false;
         for (int i = 0; i < n; i++) {
             sim.step();
-            double d = sim.robot().distanceSensors().get(4).getValue();
+            double d = sim.robot().distanceSensors().get(FRONT).getValue();
             assertThat(d).isBetween(0.68 - 0.06, 0.68 + 0.06);
             differs |= d != 0.68;
             assertThat(sim.robot().distanceSensors().get(0).getValue()).isBetween(0.9, 1.0);

@@ -34,7 +34,7 @@ import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * Time of one control step of the robot side: answer three pending sensor requests (GPS, IU,
- * DS: one GPS row, one IU row, a batch of 8 distance rows, three "answered" marks, in one
+ * DS: one GPS row, one IU row, a batch of distance rows (one per ray), three "answered" marks, in one
  * transaction) and read the newest command, on embedded H2 and on MariaDB over loopback.
  * Before each step (not timed) the simulation advances one step and a stand-in engine writes
  * the three requests and a new command through its own pool. The default retention policy is

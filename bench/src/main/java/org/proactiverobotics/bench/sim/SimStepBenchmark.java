@@ -23,7 +23,7 @@ import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * Steps per second of the sim2d world, headless: the robot wanders (drives ahead, turns away from what its
- * front sensors see) and, in {@link #stepAndReadAllSensors}, reads GPS, inertial unit, all 8 distance sensors
+ * front sensors see) and, in {@link #stepAndReadAllSensors}, reads GPS, inertial unit, all the distance sensors
  * and the battery every step, as a controller does. {@link #stepOnly} drives blind, for the physics alone.
  * {@code world} is the bundled reference arena or a generated arena with 10, 100 or 1000 obstacles at
  * constant density. The simulation restarts at each iteration so that every iteration sees the same run.
