@@ -97,6 +97,12 @@ class ReplayBrowserTest extends CommandLineTest {
                     .contains(o.get("command").getAsString());
             o.getAsJsonObject("suggestions").entrySet()
                     .forEach(e -> assertThat(info).contains(e.getKey() + ": " + e.getValue().getAsString()));
+            if (o.getAsJsonObject("seen").has("scanM") && o.getAsJsonObject("seen").get("scanM").isJsonArray()) {
+                int rays = o.getAsJsonObject("seen").getAsJsonArray("scanM").size();
+                String scanLine = info.lines().filter(l -> l.startsWith("scan m ")).findFirst().orElseThrow();
+                assertThat(scanLine.substring("scan m ".length()).split(" ")).as("every ray's reading: %s", scanLine)
+                        .hasSize(rays);
+            }
         }
         // a new address on the same page moves too
         long later = iteration(lines.get(lines.size() / 2));

@@ -64,7 +64,7 @@ public final class RobotProcess {
 
     private final Options options;
     private final ShutdownSignal signal;
-    private final ReplayData replay = new ReplayData(Map.of());
+    private final ReplayData replay;
 
     /**
      * @param options what to run
@@ -73,6 +73,7 @@ public final class RobotProcess {
     public RobotProcess(Options options, ShutdownSignal signal) {
         this.options = options;
         this.signal = signal;
+        this.replay = new ReplayData(Map.of(), options.world().robot().sensorAnglesDeg().size());
     }
 
     /**

@@ -147,7 +147,7 @@ public final class Mission {
             commandWins.merge(command.scenario(), 1L, Long::sum);
             drivingScenario = command.scenario();
         });
-        ReplayData replay = new ReplayData(slots);
+        ReplayData replay = new ReplayData(slots, sim.robot().distanceSensors().size());
         try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"))) {
             this.tracer = new StepTracer(sim, traceWriter, replay);
             tracer.seen(seen);

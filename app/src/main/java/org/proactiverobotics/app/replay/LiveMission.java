@@ -7,6 +7,7 @@ import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -27,6 +28,8 @@ public final class LiveMission {
 
     /** The most commands read at one poll: a viewer started late catches up in a few polls. */
     private static final int BATCH = 4000;
+    /** Readings per scan: the default robot's rays (the database does not hold the world's own). */
+    private static final int RAYS = org.proactiverobotics.sim2d.SimRobot.sensorAnglesDeg().length;
     /** How far before a batch's first command the readings are looked for, simulated ms. */
     private static final long READINGS_BEFORE_MS = 2000;
 
@@ -193,9 +196,12 @@ public final class LiveMission {
             try (ResultSet rs = ps.executeQuery()) {
                 while (rs.next()) {
                     int index = rs.getInt(2);
-                    if (index >= 0 && index < 8) {
-                        double[] scan = out.computeIfAbsent(rs.getLong(1), t -> new double[] {Double.NaN, Double.NaN,
-                                Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN});
+                    if (index >= 0 && index < RAYS) {
+                        double[] scan = out.computeIfAbsent(rs.getLong(1), t -> {
+                            double[] none = new double[RAYS];
+                            Arrays.fill(none, Double.NaN);
+                            return none;
+                        });
                         scan[index] = rs.getDouble(3);
                     }
                 }

@@ -8,6 +8,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * The steps of a mission in columns, as replay.html reads them: one primitive array per field
@@ -17,7 +18,8 @@ import java.util.Map;
  */
 public final class ReplayData {
 
-    private static final int SCAN = 8;
+    /** Distance readings per step: the robot's rays. */
+    private final int rays;
 
     private final List<String> strings = new ArrayList<>();
     private final Map<String, Integer> stringIds = new HashMap<>();
@@ -32,7 +34,7 @@ public final class ReplayData {
     private int[] gpsX = new int[1024];
     private int[] gpsY = new int[1024];
     private int[] yaw = new int[1024];
-    private int[] scan = new int[1024 * SCAN];
+    private int[] scan;
     private int[] seenBattery = new int[1024];
     private int[] battery = new int[1024];
     private int[] charging = new int[1024];
@@ -48,9 +50,21 @@ public final class ReplayData {
     public static final int NONE = Integer.MIN_VALUE;
 
     /**
+     * A replay of a robot with the default distance rays.
+     *
      * @param slots each suggesting scenario's CommandArray slot (the columns of suggestions, in slot order)
      */
     public ReplayData(Map<String, Integer> slots) {
+        this(slots, WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.size());
+    }
+
+    /**
+     * @param slots each suggesting scenario's CommandArray slot (the columns of suggestions, in slot order)
+     * @param rays  the robot's distance rays (readings kept per step)
+     */
+    public ReplayData(Map<String, Integer> slots, int rays) {
+        this.rays = rays;
+        this.scan = new int[1024 * rays];
         slots.entrySet().stream().sorted(Map.Entry.comparingByValue()).forEach(e -> slotScenarios.add(e.getKey()));
         for (String s : slotScenarios) {
             suggestions.put(s, new int[1024]);
@@ -79,8 +93,8 @@ public final class ReplayData {
         gpsX[i] = milli(s.gpsXM());
         gpsY[i] = milli(s.gpsYM());
         yaw[i] = milli(s.yawRad());
-        for (int k = 0; k < SCAN; k++) {
-            scan[i * SCAN + k] = s.scanM() == null || k >= s.scanM().length ? NONE : milli(s.scanM()[k]);
+        for (int k = 0; k < rays; k++) {
+            scan[i * rays + k] = s.scanM() == null || k >= s.scanM().length ? NONE : milli(s.scanM()[k]);
         }
         seenBattery[i] = centi(s.seenBattery());
         battery[i] = centi(s.batteryPct());
@@ -121,7 +135,8 @@ public final class ReplayData {
         o.add("gpsX", ints(gpsX, from, n));
         o.add("gpsY", ints(gpsY, from, n));
         o.add("yaw", ints(yaw, from, n));
-        o.add("scan", ints(scan, from * SCAN, n * SCAN));
+        o.addProperty("rays", rays);
+        o.add("scan", ints(scan, from * rays, n * rays));
         o.add("seenBattery", ints(seenBattery, from, n));
         o.add("battery", ints(battery, from, n));
         o.add("charging", ints(charging, from, n));
@@ -174,7 +189,7 @@ public final class ReplayData {
         gpsX = Arrays.copyOf(gpsX, n);
         gpsY = Arrays.copyOf(gpsY, n);
         yaw = Arrays.copyOf(yaw, n);
-        scan = Arrays.copyOf(scan, n * SCAN);
+        scan = Arrays.copyOf(scan, n * rays);
         seenBattery = Arrays.copyOf(seenBattery, n);
         battery = Arrays.copyOf(battery, n);
         charging = Arrays.copyOf(charging, n);
