@@ -53,6 +53,29 @@ class BatteryMonitorScenarioTest {
     }
 
     @Test
+    void aChargingRobotKeepsChargingWhateverItsGpsSays() {
+        try (ScenarioKit kit = kit()) {
+            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
+            drive(kit, 0, 34, 2.0);
+            kit.step();
+            kit.robot().gps(-2, 0.05).battery(20); // arrived
+            kit.step();
+            assertThat(kit.suggestion(BATTERY)).isEqualTo("RECHARGE");
+            // a noisy fix near the station's rim, before and after the battery says it charges: the robot has not moved
+            kit.robot().gps(-2, 0.33);
+            kit.step();
+            assertThat(kit.suggestion(BATTERY)).as("the battery has not had time to say it charges: it stays").isEqualTo("RECHARGE");
+            kit.robot().gps(-2, 0.33).battery(21, true);
+            kit.step();
+            assertThat(kit.suggestion(BATTERY)).as("charging").isEqualTo("RECHARGE");
+            // not charging there after all: once the battery has had time to say so, it drives in
+            kit.robot().gps(-2, 0.33).battery(21, false);
+            kit.step(20);
+            assertThat(kit.suggestion(BATTERY)).startsWith("DRIVE");
+        }
+    }
+
+    @Test
     void beforeTheDrainIsMeasuredOnlyThePointOfNoReturnSendsItBack() {
         try (ScenarioKit kit = kit()) {
             kit.mission().station(-2, 0, 100).checkpoint(8, 0);
