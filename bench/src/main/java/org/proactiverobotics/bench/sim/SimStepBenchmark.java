@@ -53,6 +53,10 @@ public class SimStepBenchmark {
     private SimRobot robot;
     private List<DistanceSensor> sensors;
 
+    /** The default rays at 8° left and 8° right (their outer neighbours are the 20° rays). */
+    private static final int LEFT_8 = WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.indexOf(8.0);
+    private static final int RIGHT_8 = WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.indexOf(-8.0);
+
     @Setup(Level.Trial)
     public void buildWorld() {
         spec = ClutterWorlds.of(world);
@@ -69,8 +73,8 @@ public class SimStepBenchmark {
     @Benchmark
     public double stepAndReadAllSensors() {
         double sum = 0;
-        double frontLeft = Math.min(sensors.get(4).getValue(), sensors.get(5).getValue());
-        double frontRight = Math.min(sensors.get(3).getValue(), sensors.get(2).getValue());
+        double frontLeft = Math.min(sensors.get(LEFT_8).getValue(), sensors.get(LEFT_8 + 1).getValue());
+        double frontRight = Math.min(sensors.get(RIGHT_8).getValue(), sensors.get(RIGHT_8 - 1).getValue());
         for (DistanceSensor s : sensors) {
             sum += s.getValue();
         }

@@ -157,7 +157,7 @@ public final class CollisionReflex {
             if (Math.abs(turnRate) > 0.05) {
                 turning = turnRate > 0 ? +1 : -1; // the way the command was turning
             } else if (turning == 0) {
-                turning = s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
+                turning = freerSide(s);
             }
         }
         return Steering.drive(0.0, turning * TURN_RAD_S, profile);
@@ -177,10 +177,7 @@ public final class CollisionReflex {
         double v = Math.min(speed, AROUND_SPEED * profile.maxSpeedMps());
         double reachM = c.imminentM() * v / profile.maxSpeedMps() + SIDE_MARGIN_M;
         double keep = radiusM + SIDE_MARGIN_M;
-        int first = s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
-        if (guarded != 0) {
-            first = -guarded;
-        }
+        int first = guarded != 0 ? -guarded : freerSide(s);
         for (int k = 1; k <= AROUND_ARCS; k++) {
             for (int q = 0; q < 2; q++) {
                 int side = q == 0 ? first : -first;
@@ -195,6 +192,11 @@ public final class CollisionReflex {
             }
         }
         return null;
+    }
+
+    /** @return the side the scan sees more room on, +1 left, -1 right */
+    private static int freerSide(DistanceScan s) {
+        return s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
     }
 
     /** Whether the body, driven along an arc for {@code reachM}, comes within {@code keep} of a cell the rays never saw. */

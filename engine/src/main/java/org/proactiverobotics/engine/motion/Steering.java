@@ -43,13 +43,7 @@ public final class Steering {
      * @return a DRIVE command
      */
     public static String goTo(double xM, double yM, double yawRad, double targetX, double targetY, DriveProfile profile) {
-        double dx = targetX - xM;
-        double dy = targetY - yM;
-        double error = wrap(Math.atan2(dy, dx) - yawRad);
-        double turn = clamp(TURN_GAIN * error, MAX_TURN_RAD_S);
-        double speed = Math.abs(error) > TURN_ON_SPOT_RAD ? 0.0 : profile.maxSpeedMps() * Math.cos(error);
-        speed = Math.min(speed, Math.max(MIN_ARRIVAL_SPEED, ARRIVAL_GAIN * Math.hypot(dx, dy)));
-        return drive(speed, turn, profile);
+        return goTo(xM, yM, yawRad, targetX, targetY, profile, 0);
     }
 
     /**

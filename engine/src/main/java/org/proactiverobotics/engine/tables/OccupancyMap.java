@@ -368,26 +368,10 @@ public final class OccupancyMap {
      * @return whether an occupied cell's centre lies within {@code keepM} of the point and closer to it than to where the body is
      */
     public boolean occupiedApproached(double fromX, double fromY, double px, double py, double keepM) {
-        int i0 = cell(px - keepM);
-        int i1 = cell(px + keepM);
-        int j0 = cell(py - keepM);
-        int j1 = cell(py + keepM);
-        if (!anyOccupied(i0, j0, i1, j1)) {
+        if (!anyOccupied(cell(px - keepM), cell(py - keepM), cell(px + keepM), cell(py + keepM))) {
             return false;
         }
-        double keep2 = keepM * keepM;
-        for (int j = j0; j <= j1; j++) {
-            double cy = centre(j);
-            for (int i = i0; i <= i1; i++) {
-                double cx = centre(i);
-                double d2 = (cx - px) * (cx - px) + (cy - py) * (cy - py);
-                if (d2 < keep2 && d2 < (cx - fromX) * (cx - fromX) + (cy - fromY) * (cy - fromY) - 1e-6
-                        && get(i, j) == OCCUPIED) {
-                    return true;
-                }
-            }
-        }
-        return false;
+        return approached(fromX, fromY, px, py, keepM, OCCUPIED);
     }
 
     /**
@@ -396,6 +380,11 @@ public final class OccupancyMap {
      * @return whether a never-seen cell's centre lies within {@code keepM} of the point and closer to it than to where the body is
      */
     public boolean unknownApproached(double fromX, double fromY, double px, double py, double keepM) {
+        return approached(fromX, fromY, px, py, keepM, UNKNOWN);
+    }
+
+    /** Whether a cell in this state lies within {@code keepM} of the point and closer to it than to where the body is. */
+    private boolean approached(double fromX, double fromY, double px, double py, double keepM, byte state) {
         int i0 = cell(px - keepM);
         int i1 = cell(px + keepM);
         int j0 = cell(py - keepM);
@@ -407,7 +396,7 @@ public final class OccupancyMap {
                 double cx = centre(i);
                 double d2 = (cx - px) * (cx - px) + (cy - py) * (cy - py);
                 if (d2 < keep2 && d2 < (cx - fromX) * (cx - fromX) + (cy - fromY) * (cy - fromY) - 1e-6
-                        && get(i, j) == UNKNOWN) {
+                        && get(i, j) == state) {
                     return true;
                 }
             }

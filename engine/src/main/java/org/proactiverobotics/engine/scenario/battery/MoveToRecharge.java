@@ -120,8 +120,9 @@ public final class MoveToRecharge extends Rule {
     @Override
     protected void actions(RuleContext ctx) {
         double fromStationM = position.distanceTo(xM, yM);
-        if (fromStationM < radiusM * AT_STATION_FRACTION
-                || arrived && (battery.charging() || battery.simTimeMs() <= arrivedMs + CHARGE_START_MS || fromStationM < radiusM * STAY_FRACTION)) {
+        boolean staying = arrived && (battery.charging() || battery.simTimeMs() <= arrivedMs + CHARGE_START_MS
+                || fromStationM < radiusM * STAY_FRACTION);
+        if (fromStationM < radiusM * AT_STATION_FRACTION || staying) {
             if (!arrived) {
                 arrived = true;
                 arrivedMs = position.simTimeMs();
