@@ -68,6 +68,33 @@ class GenerateCommandTest extends CommandLineTest {
         }
     }
 
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"pillars", "rooms", "maze", "cluttered", "traps", "battery"})
+    void theSmallestRobotGetsWorldsItsPlannerCanPass(String kind) throws Exception {
+        double radius = "rooms".equals(kind) ? 0.07 : 0.05; // each kind's smallest (rooms: a 5 cm robot's doors are closed by the clearance)
+        Path out = tmp.resolve("small");
+        assertThat(run("generate", "--kind", kind, "--count", "2", "--seed", "3", "--robot-radius", String.valueOf(radius),
+                "--out", out.toString())).as(err.toString()).isZero();
+        for (String name : List.of(kind + "-001.json", kind + "-002.json")) {
+            WorldSpec world = WorldFiles.load(out.resolve(name));
+            assertThat(world.robot().radiusM()).isEqualTo(radius);
+            assertThat(Solvability.of(world).solvable()).isTrue();
+        }
+    }
+
+    @Test
+    void aRobotTooSmallForTheKindIsBadInputNamedUpFrontNotAStackTrace() {
+        Path out = tmp.resolve("tiny");
+        assertThat(run("generate", "--kind", "corridors", "--count", "1", "--robot-radius", "0.05", "--out", out.toString()))
+                .isEqualTo(2);
+        assertThat(err.toString()).contains("--robot-radius 0.05 is too small for corridors worlds: from 0.1 m")
+                .doesNotContain("Exception");
+        assertThat(run("generate", "--kind", "rooms", "--count", "1", "--robot-radius", "0.06", "--out", out.toString()))
+                .isEqualTo(2);
+        assertThat(err.toString()).contains("too small for rooms worlds: from 0.07 m");
+        assertThat(out).doesNotExist();
+    }
+
     @Test
     void thePlannerFindsNoWayThroughAClosedWallAndABatteryTooSmall() {
         WorldSpec ref = WorldFiles.bundled("reference-arena");

@@ -46,7 +46,8 @@ public final class GenerateCommand implements Callable<Integer> {
     private Path out;
 
     @Option(names = "--robot-radius", paramLabel = "M", defaultValue = "0.12",
-            description = "The robot's radius in metres (0.05 to 0.3): passages, doors and corridors scale with it,"
+            description = "The robot's radius in metres (0.05 to 0.3; corridors from 0.1, rooms from 0.07): passages,"
+                    + " doors and corridors scale with it,"
                     + " and the planner checks each world on this footprint. Default: ${DEFAULT-VALUE}.")
     private double robotRadiusM;
 
@@ -69,8 +70,14 @@ public final class GenerateCommand implements Callable<Integer> {
         WorldGenerator generator = new WorldGenerator(WorldGenerator.Kind.valueOf(kind.toUpperCase(Locale.ROOT)),
                 robotRadiusM);
         List<WorldSpec> worlds = new ArrayList<>();
-        for (int i = 1; i <= count; i++) {
-            worlds.add(generator.world(seed, i));
+        try {
+            for (int i = 1; i <= count; i++) {
+                worlds.add(generator.world(seed, i));
+            }
+        } catch (IllegalStateException e) { // nothing is written before every world is drawn
+            err.println(e.getMessage() + " for a robot of radius " + robotRadiusM + " m: try another --seed or --robot-radius");
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
         }
         try {
             Files.createDirectories(out);
@@ -97,8 +104,14 @@ public final class GenerateCommand implements Callable<Integer> {
         if (!WorldGenerator.Kind.labels().contains(kind)) {
             return "--kind must be one of " + String.join(", ", WorldGenerator.Kind.labels()) + ": " + kind;
         }
-        if (!(robotRadiusM >= 0.05 && robotRadiusM <= 0.3)) {
+        if (!(robotRadiusM >= WorldGenerator.MIN_RADIUS_M && robotRadiusM <= WorldGenerator.MAX_RADIUS_M)) {
             return "--robot-radius must be from 0.05 to 0.3 (metres): " + robotRadiusM;
+        }
+        WorldGenerator.Kind k = WorldGenerator.Kind.valueOf(kind.toUpperCase(Locale.ROOT));
+        if (robotRadiusM < k.minRadiusM()) {
+            return String.format(Locale.ROOT, "--robot-radius %s is too small for %s worlds: from %s m (the planner that checks"
+                    + " each world keeps 5 cm round the robot, which closes passages of a few diameters of a smaller one)",
+                    robotRadiusM, kind, k.minRadiusM());
         }
         if (count < 1 || count > 10_000) {
             return "--count must be from 1 to 10000: " + count;

@@ -31,25 +31,36 @@ public final class WorldGenerator {
          * from the gap, so a robot that does not know the map follows each wall the wrong way first (about
          * 3.5 times the planned path, measured, and the recharges that driving asks for).
          */
-        CORRIDORS(5),
+        CORRIDORS(5, 0.1),
         /** Few obstacles, far checkpoints and a battery that cannot do the tour without recharging. */
         BATTERY,
         /** A dense field of thin pillars between the start and the goal, passages down to 1.5 robot diameters. */
         PILLARS,
         /** Rooms of 2.3 to 3.5 m joined by doors of 2 to 3 robot diameters, checkpoints in other rooms. */
-        ROOMS,
+        ROOMS(3, 0.07),
         /** A maze of corridors 2.5 to 3.2 robot diameters wide, checkpoints in far parts of it. */
         MAZE;
 
         /** The tour's time limit is its planned path's time at top speed times this, plus charging and a margin. */
         private final int slowdown;
+        /** The smallest robot radius its worlds are drawn for, metres (below, hardly a draw is solvable). */
+        private final double minRadiusM;
 
         Kind() {
-            this(3);
+            this(3, MIN_RADIUS_M);
         }
 
-        Kind(int slowdown) {
+        Kind(int slowdown, double minRadiusM) {
             this.slowdown = slowdown;
+            this.minRadiusM = minRadiusM;
+        }
+
+        /**
+         * @return the smallest robot radius this kind is drawn for, metres: for corridors and rooms the
+         *         solvability check's 5 cm clearance closes passages of a few diameters of a smaller robot
+         */
+        public double minRadiusM() {
+            return minRadiusM;
         }
 
         /** @return its name on the command line */
@@ -62,6 +73,11 @@ public final class WorldGenerator {
             return Arrays.stream(values()).map(Kind::label).toList();
         }
     }
+
+    /** The smallest robot radius any kind is drawn for, metres. */
+    public static final double MIN_RADIUS_M = 0.05;
+    /** The largest, metres. */
+    public static final double MAX_RADIUS_M = 0.3;
 
     private static final double ARENA_M = 5.0;
     private static final int MAX_DRAWS = 500;
@@ -243,7 +259,7 @@ public final class WorldGenerator {
         for (int w = 0; w < walls; w++) {
             double y = round(bottom + w * spacing + random.nextDouble(-0.15, 0.15));
             double half = Math.sqrt(ARENA_M * ARENA_M - y * y); // the chord at this height
-            double gap = random.nextDouble(1.9, 2.9) * diameterM;
+            double gap = passable(random.nextDouble(1.9, 2.9) * diameterM, diameterM);
             double from = gapRight ? -half - 0.3 : -half + gap;
             double to = gapRight ? half - gap : half + 0.3;
             obstacles.add(Obstacle.box(round((from + to) / 2), y, round(to - from), 0.2, 0.0));
@@ -343,12 +359,22 @@ public final class WorldGenerator {
         return new double[] {round(sx), round(sy - 0.25 * rh), round(sx + 0.25 * rw), round(sy + 0.2 * rh)};
     }
 
+    /**
+     * A gap or door of the width drawn, but never narrower than the solvability check's planner can
+     * pass (the body, its {@link Solvability#CLEARANCE_M} each side and two of its cells): for a small
+     * robot the 5 cm clearance, not the diameter, decides (radius 0.05 m: no rooms or corridors
+     * world was solvable in 500 draws). The default robot and larger ones draw as before.
+     */
+    static double passable(double widthM, double diameterM) {
+        return Math.max(widthM, diameterM + 2 * Solvability.CLEARANCE_M + 2 * GridPlanner.CELL_M);
+    }
+
     /** A wall along x = at (vertical) or y = at, from a to b, with a door of 2 to 3 diameters when asked. */
     private static void wallWithDoor(SplittableRandom random, List<Obstacle> obstacles, boolean vertical, double at,
                                      double a, double b, boolean door, double diameterM) {
         List<double[]> pieces = new ArrayList<>();
         if (door) {
-            double width = Math.min(random.nextDouble(2.0, 3.0) * diameterM, b - a - 0.7);
+            double width = Math.min(passable(random.nextDouble(2.0, 3.0) * diameterM, diameterM), b - a - 0.7);
             double from = random.nextDouble(a + 0.3, b - 0.3 - width);
             pieces.add(new double[] {a, from});
             pieces.add(new double[] {from + width, b});
