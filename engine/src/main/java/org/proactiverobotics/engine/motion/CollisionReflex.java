@@ -136,7 +136,7 @@ public final class CollisionReflex {
         if (guarded != 0) {
             turning = -guarded; // away from the flank it would close on
         }
-        if (guarded == 0 && !hitsWithin(map, xM, yM, yawRad, radiusM, speed, turnRate, reachM)) {
+        if (guarded == 0 && !hitsWithin(map, xM, yM, yawRad, radiusM, speed, turnRate, reachM, false)) {
             turning = 0;
             vetoes = 0;
             return null;
@@ -176,7 +176,6 @@ public final class CollisionReflex {
         }
         double v = Math.min(speed, AROUND_SPEED * profile.maxSpeedMps());
         double reachM = c.imminentM() * v / profile.maxSpeedMps() + SIDE_MARGIN_M;
-        double keep = radiusM + SIDE_MARGIN_M;
         int first = guarded != 0 ? -guarded : freerSide(s);
         for (int k = 1; k <= AROUND_ARCS; k++) {
             for (int q = 0; q < 2; q++) {
@@ -185,8 +184,7 @@ public final class CollisionReflex {
                 if (guarded != 0 && w * guarded > FLANK_TURN_RAD_S) {
                     continue; // not toward the flank that is guarded
                 }
-                if (!hitsWithin(map, xM, yM, yawRad, radiusM, v, w, reachM)
-                        && !unseenWithin(map, xM, yM, yawRad, keep, v, w, reachM)) {
+                if (!hitsWithin(map, xM, yM, yawRad, radiusM, v, w, reachM, true)) {
                     return Steering.drive(v, w, profile);
                 }
             }
@@ -199,39 +197,23 @@ public final class CollisionReflex {
         return s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
     }
 
-    /** Whether the body, driven along an arc for {@code reachM}, comes within {@code keep} of a cell the rays never saw. */
-    private static boolean unseenWithin(OccupancyMap map, double xM, double yM, double yawRad, double keep,
-                                        double speed, double turnRate, double reachM) {
-        int steps = (int) Math.ceil(reachM / ARC_STEP_M);
-        double perStepRad = turnRate / speed * ARC_STEP_M;
-        double px = xM;
-        double py = yM;
-        double heading = yawRad;
-        for (int q = 1; q <= steps; q++) {
-            heading += perStepRad;
-            px += ARC_STEP_M * Math.cos(heading);
-            py += ARC_STEP_M * Math.sin(heading);
-            if (map.unknownApproached(xM, yM, px, py, keep)) {
-                return true;
-            }
-        }
-        return false;
-    }
-
     /** One step of backing off straight, or null (and no more backing) when something is behind too. */
     private String backOff(OccupancyMap map, double xM, double yM, double yawRad, DriveProfile profile) {
         double backSpeed = -BACK_SPEED * profile.maxSpeedMps();
         backing--;
-        if (!hitsWithin(map, xM, yM, yawRad, profile.axleWidthM() / 2, backSpeed, 0.0, BACK_REACH_M)) {
+        if (!hitsWithin(map, xM, yM, yawRad, profile.axleWidthM() / 2, backSpeed, 0.0, BACK_REACH_M, false)) {
             return Steering.drive(backSpeed, 0.0, profile);
         }
         backing = 0;
         return null;
     }
 
-    /** Whether the body, driven along the command's arc for {@code reachM}, comes closer than the margin to a hit. */
+    /**
+     * Whether the body, driven along the command's arc for {@code reachM}, comes closer than the
+     * margin to a hit or an occupied cell (with {@code unseenToo}, to a cell the rays never saw).
+     */
     private boolean hitsWithin(OccupancyMap map, double xM, double yM, double yawRad, double radiusM,
-                               double speed, double turnRate, double reachM) {
+                               double speed, double turnRate, double reachM, boolean unseenToo) {
         double keep = radiusM + SIDE_MARGIN_M;
         double keep2 = keep * keep;
         int steps = (int) Math.ceil(reachM / ARC_STEP_M);
@@ -257,7 +239,8 @@ public final class CollisionReflex {
                     }
                 }
             }
-            if (map != null && map.occupiedApproached(xM, yM, px, py, keep)) {
+            if (map != null && (map.occupiedApproached(xM, yM, px, py, keep)
+                    || unseenToo && map.unknownApproached(xM, yM, px, py, keep))) {
                 return true;
             }
         }

@@ -6,15 +6,11 @@ package org.proactiverobotics.engine.navigation;
  *
  * @param xs     the waypoints' x, metres, from the start to the goal
  * @param ys     their y, metres
- * @param slackM the room the route gives up against the planner's usual clearance, metres (0: none;
- *               a tight route, through a gap the map shows narrower than it may be)
+ * @param slackM   the room the route gives up against the planner's usual clearance, metres (0: none;
+ *                 a tight route, through a gap the map shows narrower than it may be)
+ * @param overSeen whether the route keeps to cells the rays have seen ({@link RoutePlanner#planOverSeen})
  */
-public record Route(double[] xs, double[] ys, double slackM) {
-
-    /** A route with the usual clearance. */
-    public Route(double[] xs, double[] ys) {
-        this(xs, ys, 0.0);
-    }
+public record Route(double[] xs, double[] ys, double slackM, boolean overSeen) {
 
     /** @return the route's length, metres */
     public double lengthM() {

@@ -81,11 +81,8 @@ public final class RouteFollower {
                         && !inSight(map, x, y, xs[nearest], ys[nearest], sightM, seenRoute);
         if (plan) {
             sincePlan = 0;
-            Route route = overSeen ? RoutePlanner.planOverSeen(map, x, y, goalX, goalY, goalReachM, robotRadiusM) : null;
-            seenRoute = route != null;
-            if (route == null) {
-                route = RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
-            }
+            Route route = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM)
+                    : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
             if (route == null) {
                 plansWithoutRoute++;
                 xs = null;
@@ -98,6 +95,7 @@ public final class RouteFollower {
             xs = route.xs();
             ys = route.ys();
             slackM = route.slackM();
+            seenRoute = route.overSeen();
             legM = null;
             nearest = 0;
         }

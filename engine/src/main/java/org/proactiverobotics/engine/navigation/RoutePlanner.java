@@ -134,6 +134,18 @@ public final class RoutePlanner {
         return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true);
     }
 
+    /**
+     * A route over the cells the rays have seen where they hold one ({@link #planOverSeen}), else one
+     * with unknown cells free ({@link #plan}): a way the robot knows it can drive where there is one.
+     *
+     * @return the route ({@link Route#overSeen()} says which), or null when neither finds one
+     */
+    public static Route planSeenFirst(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                      double robotRadiusM) {
+        Route route = planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM);
+    }
+
     /** Whether a cell whose centre lies within {@code reachM} of a point (or the point's own cell) has been seen. */
     private static boolean seenNear(OccupancyMap map, double x, double y, double reachM) {
         int r = (int) Math.ceil(reachM / OccupancyMap.CELL_M);
@@ -284,7 +296,7 @@ public final class RoutePlanner {
         }
         xs[m] = gx;
         ys[m] = gy;
-        return shorten(g, xs, ys, slackM);
+        return shorten(g, xs, ys, slackM, seenOnly);
     }
 
     /** The last distances this thread worked out, for the next plan on the same map and area. */
@@ -351,7 +363,7 @@ public final class RoutePlanner {
     }
 
     /** Keeps only the points a straight drive must pass through: from each kept point, the last one of the chain still in sight. */
-    private static Route shorten(Grid g, double[] xs, double[] ys, double slackM) {
+    private static Route shorten(Grid g, double[] xs, double[] ys, double slackM, boolean seenOnly) {
         int n = xs.length;
         int[] kept = new int[n];
         int count = 0;
@@ -372,7 +384,7 @@ public final class RoutePlanner {
             rx[q] = xs[kept[q]];
             ry[q] = ys[kept[q]];
         }
-        return new Route(rx, ry, slackM);
+        return new Route(rx, ry, slackM, seenOnly);
     }
 
     private static int heuristic(int i, int j, int gi, int gj, int reachTenths) {

@@ -120,10 +120,7 @@ public final class BatteryMonitor extends Rule {
             double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
             double reachM = station.radiusM() * MoveToRecharge.AT_STATION_FRACTION * 0.9;
             // the way MoveToRecharge would drive: over seen cells where they lead there
-            Route route = RoutePlanner.planOverSeen(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM, robotRadiusM);
-            if (route == null) {
-                route = RoutePlanner.plan(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM, robotRadiusM);
-            }
+            Route route = RoutePlanner.planSeenFirst(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM, robotRadiusM);
             wayBackM = route == null ? straightM : route.lengthM();
             finishM = -1;
             drivenSincePlanM = 0;
