@@ -138,8 +138,8 @@ public final class BatteryMonitor extends Rule {
         if (finishM < 0) {
             OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
             double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
-            // reached a little inside its radius, as ReachDestination counts it
-            Route route = RoutePlanner.plan(map, position.xM(), position.yM(), c.xM(), c.yM(), c.radiusM() * 0.8 * 0.9, robotRadiusM);
+            Route route = RoutePlanner.plan(map, position.xM(), position.yM(), c.xM(), c.yM(), Checkpoint.routeReachM(c.radiusM()),
+                    robotRadiusM);
             finishM = route == null ? Double.POSITIVE_INFINITY : route.lengthM() - drivenSincePlanM;
         }
         return Math.max(finishM + drivenSincePlanM, position.distanceTo(c.xM(), c.yM()));

@@ -7,6 +7,7 @@ import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
+import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MissionTables;
@@ -25,13 +26,6 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  */
 public final class MoveToCheckpoint extends Rule {
 
-    /**
-     * Counts as reached inside half the checkpoint's radius, so that the simulator, which judges the
-     * true position, agrees even when the GPS errs by several centimetres: at 0.8 of it, realistic
-     * noise (5 cm) marked checkpoints the robot had passed 0.25 m from (radius 0.25 m) and the mission
-     * went on to the next while the judge still waited for the first.
-     */
-    static final double REACHED_FRACTION = 0.5;
     /** How long no plan finds a route before the checkpoint is declared unreachable, simulated ms. */
     static final long NO_ROUTE_MS = 3_000;
 
@@ -96,7 +90,7 @@ public final class MoveToCheckpoint extends Rule {
 
     @Override
     protected void actions(RuleContext ctx) {
-        reached = position.distanceTo(xM, yM) < radiusM * REACHED_FRACTION;
+        reached = position.distanceTo(xM, yM) < radiusM * Checkpoint.REACHED_FRACTION;
         if (reached) {
             ctx.service(MissionTables.class).markReached(seq, position.simTimeMs());
             return;
@@ -104,7 +98,7 @@ public final class MoveToCheckpoint extends Rule {
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
         RouteFollower.Status status = route.step(map, position.xM(), position.yM(), xM, yM,
-                radiusM * REACHED_FRACTION * 0.9, profile.axleWidthM() / 2);
+                Checkpoint.routeReachM(radiusM), profile.axleWidthM() / 2);
         if (status == RouteFollower.Status.NO_ROUTE) {
             if (noRouteSinceMs < 0) {
                 noRouteSinceMs = position.simTimeMs();
