@@ -133,6 +133,33 @@ class JdbcRobotLinkTest {
         }
     }
 
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void aLinkThatDidNotWriteTheReadingsPrunesTheSameRows(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink writer = new JdbcRobotLink(db.dataSource());
+             RobotLink restarted = new JdbcRobotLink(db.dataSource())) {
+            List<DistanceReading> ds = List.of(new DistanceReading(0, 0, 0.3, 1), new DistanceReading(1, 1, 0.4, 1));
+            for (int step = 0; step < 30; step++) {
+                for (int robot = 1; robot <= 2; robot++) {
+                    writer.answer(robot, new SensorAnswer(step * 32L, null, null, ds, null, new long[0]));
+                }
+            }
+            // robot 1's cut-off comes from what the writer remembers, robot 2's from the table
+            assertThat(writer.prune(1, new RetentionPolicy(5, 1))).isEqualTo(25 * 2);
+            assertThat(restarted.prune(2, new RetentionPolicy(5, 1))).isEqualTo(25 * 2);
+            for (int robot = 1; robot <= 2; robot++) {
+                assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms) FROM distance_sensor_data WHERE robot_id = " + robot))
+                        .containsExactly(10L, 25 * 32L);
+            }
+            // a retention larger than the writer remembers asks the table, then remembers enough
+            writer.answer(1, new SensorAnswer(30 * 32L, null, null, ds, null, new long[0]));
+            assertThat(writer.prune(1, new RetentionPolicy(3000, 1))).isZero();
+            assertThat(writer.prune(1, new RetentionPolicy(2, 1))).isEqualTo(4 * 2);
+            assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms) FROM distance_sensor_data WHERE robot_id = 1"))
+                    .containsExactly(4L, 29 * 32L);
+        }
+    }
+
     /** The first row of a query, numbers normalised (Long for integers, Double, Boolean). */
     static List<Object> one(TestDatabase db, String sql) throws SQLException {
         try (Connection c = db.dataSource().getConnection(); PreparedStatement ps = c.prepareStatement(sql);
