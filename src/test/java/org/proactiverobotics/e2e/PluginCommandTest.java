@@ -187,6 +187,9 @@ class PluginCommandTest extends CommandLineTest {
         Path twinB = PluginJars.build(tmp.resolve("twin-b.jar"), Map.of("b.Twin", PluginJars.bare("b", "Twin", "Twin")),
                 List.of("b.Twin"));
         assertRefused("two scenarios are named 'Twin': a.Twin in", "run", "--scenarios", twinA + "," + twinB);
+        Path copy = Files.copy(twinA, tmp.resolve("copy-of-twin-a.jar"));
+        assertRefused("copy-of-twin-a.jar: its scenario class a.Twin is already loaded from " + twinA
+                + " (a class is loaded once: give each plug-in jar once)", "run", "--scenarios", twinA + "," + copy);
         Path badName = PluginJars.build(tmp.resolve("badname.jar"), Map.of("n.Spaced",
                 PluginJars.bare("n", "Spaced", "has space")), List.of("n.Spaced"));
         assertRefused("is named 'has space'", "run", "--scenarios", badName.toString());

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.CodeSource;
@@ -119,8 +120,7 @@ public final class ScenarioPlugins {
         Map<String, Path> from = new LinkedHashMap<>();
         for (Map.Entry<Path, List<Scenario>> e : byJar.entrySet()) {
             if (e.getValue().isEmpty()) {
-                throw new PluginException(e.getKey() + ": holds no scenario (list its classes, which implement "
-                        + Scenario.class.getName() + ", in " + SERVICE_FILE + ")");
+                throw new PluginException(e.getKey() + ": " + whyEmpty(e.getKey(), byJar));
             }
             for (Scenario s : e.getValue()) {
                 String name = nameOf(s, e.getKey());
@@ -188,6 +188,34 @@ public final class ScenarioPlugins {
             throw new PluginException(path + ": not a jar (" + e.getMessage() + ")");
         }
         return absolute;
+    }
+
+    /**
+     * Why a jar yielded no scenario: most often its classes were already loaded from an earlier jar
+     * (the same plug-in given twice, under two names), since a class is loaded once.
+     */
+    private static String whyEmpty(Path jar, Map<Path, List<Scenario>> byJar) {
+        List<String> listed = new ArrayList<>();
+        try (ZipFile zip = new ZipFile(jar.toFile())) {
+            String text = new String(zip.getInputStream(zip.getEntry(SERVICE_FILE)).readAllBytes(), StandardCharsets.UTF_8);
+            for (String line : text.split("\\R")) {
+                String name = line.replaceFirst("#.*", "").strip();
+                if (!name.isEmpty()) {
+                    listed.add(name);
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            listed = List.of();
+        }
+        for (Map.Entry<Path, List<Scenario>> other : byJar.entrySet()) {
+            for (Scenario s : other.getValue()) {
+                if (listed.contains(s.getClass().getName())) {
+                    return "its scenario class " + s.getClass().getName() + " is already loaded from " + other.getKey()
+                            + " (a class is loaded once: give each plug-in jar once)";
+                }
+            }
+        }
+        return "holds no scenario (list its classes, which implement " + Scenario.class.getName() + ", in " + SERVICE_FILE + ")";
     }
 
     private static Path jarOf(Class<?> type, List<Path> jars) {
