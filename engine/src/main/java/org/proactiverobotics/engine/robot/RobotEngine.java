@@ -455,7 +455,7 @@ public final class RobotEngine {
                     .service(MissionTables.class, wired.mission())
                     .service(StrategyTable.class, wired.strategy())
                     .service(EngineComments.class, wired.comments())
-                    .service(OccupancyMapTable.class, mapTable)
+                    .service(OccupancyMapTable.class, knownMap.table())
                     .service(KnownMap.class, knownMap)
                     .service(DriveProfile.class, drive);
             freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
