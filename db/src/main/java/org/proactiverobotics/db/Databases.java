@@ -102,6 +102,10 @@ public final class Databases {
         // a JDBC batch as one round trip (the engine's changed queue rows, map chunks, requests;
         // the robot's readings): the MariaDB driver bulk-sends only inserts unless asked, and
         // MySQL's rewrites nothing unless asked. A setting in the URL wins.
+        // and a transaction's statements as one multi-statement round trip (RoundTrip); all our SQL has '?' for values
+        if ((jdbcUrl.startsWith("jdbc:mariadb:") || jdbcUrl.startsWith("jdbc:mysql:")) && !jdbcUrl.contains("allowMultiQueries")) {
+            config.addDataSourceProperty("allowMultiQueries", "true");
+        }
         if (jdbcUrl.startsWith("jdbc:mariadb:") && !jdbcUrl.contains("useBulkStmts")) {
             config.addDataSourceProperty("useBulkStmts", "true");
         } else if (jdbcUrl.startsWith("jdbc:mysql:") && !jdbcUrl.contains("rewriteBatchedStatements")) {

@@ -13,6 +13,7 @@ import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
+import org.proactiverobotics.db.RoundTrip;
 
 /**
  * {@link RobotLink} over JDBC and the tables of {@code schema.sql}; the same SQL runs on H2
@@ -50,6 +51,10 @@ public final class JdbcRobotLink implements RobotLink {
      * without asking the database, whose DISTINCT over every kept row was 3 % of an H2 mission (JFR).
      */
     private final Map<Integer, ReadingTimes> distanceTimes = new ConcurrentHashMap<>();
+    /** Whether the server takes an answer as one multi-statement round trip; null until the first answer. */
+    private volatile Boolean multiStatements;
+    /** MariaDB's and MySQL's syntax error: what a server that does not allow multi-statements says. */
+    private static final int ER_PARSE_ERROR = 1064;
     /** What a sync clock read with the engine's tick, for the next read of it (each taken once); null: nothing. */
     private volatile HandedOff handedOff;
 
@@ -124,6 +129,10 @@ public final class JdbcRobotLink implements RobotLink {
     @Override
     public void answer(int robotId, SensorAnswer answer) throws LinkException {
         withConnection("writing " + answer.readingCount() + " reading(s)", c -> {
+            if (oneRoundTrip(c) && answerInOneRoundTrip(c, robotId, answer)) {
+                remember(robotId, answer);
+                return null;
+            }
             c.setAutoCommit(false);
             try {
                 long t = answer.simTimeMs();
@@ -174,15 +183,96 @@ public final class JdbcRobotLink implements RobotLink {
                     }
                 }
                 c.commit();
-                if (!distances.isEmpty()) {
-                    distanceTimes.computeIfAbsent(robotId, id -> new ReadingTimes()).add(t);
-                }
+                remember(robotId, answer);
                 return null;
             } catch (SQLException | RuntimeException e) {
                 rollbackQuietly(c, e);
                 throw e;
             }
         });
+    }
+
+    /**
+     * The answer as one transaction in one round trip (MariaDB, MySQL).
+     *
+     * @return false, having written nothing, when the server refuses multi-statements (a pool not
+     *         made by {@code Databases}): this link then answers statement by statement from now on
+     */
+    private boolean answerInOneRoundTrip(Connection c, int robotId, SensorAnswer answer) throws SQLException {
+        long t = answer.simTimeMs();
+        RoundTrip trip = new RoundTrip();
+        if (answer.gps() != null) {
+            trip.add(INSERT_GPS, 4, (ps, p) -> {
+                ps.setInt(p, robotId);
+                ps.setLong(p + 1, t);
+                ps.setDouble(p + 2, answer.gps().xM());
+                ps.setDouble(p + 3, answer.gps().yM());
+            });
+        }
+        if (answer.iu() != null) {
+            trip.add(INSERT_IU, 5, (ps, p) -> {
+                ps.setInt(p, robotId);
+                ps.setLong(p + 1, t);
+                ps.setDouble(p + 2, answer.iu().rollRad());
+                ps.setDouble(p + 3, answer.iu().pitchRad());
+                ps.setDouble(p + 4, answer.iu().yawRad());
+            });
+        }
+        List<DistanceReading> distances = answer.distances();
+        for (int from = 0; from < distances.size(); from += MultiRow.MAX_ROWS) {
+            int first = from;
+            trip.addRows(INSERT_DS, 6, Math.min(MultiRow.MAX_ROWS, distances.size() - from), (ps, p, r) -> {
+                DistanceReading d = distances.get(first + r);
+                ps.setInt(p, robotId);
+                ps.setLong(p + 1, t);
+                ps.setInt(p + 2, d.sensorIndex());
+                ps.setDouble(p + 3, d.angleRad());
+                ps.setDouble(p + 4, d.distanceM());
+                ps.setDouble(p + 5, d.rangeM());
+            });
+        }
+        if (answer.battery() != null) {
+            trip.add(INSERT_BATTERY, 4, (ps, p) -> bindBattery(ps, p, robotId, t, answer.battery()));
+        }
+        long[] ids = answer.requestIds();
+        if (ids.length > 0) {
+            trip.add(markAnswered(ids.length), 2 + ids.length, (ps, p) -> {
+                ps.setLong(p, t);
+                ps.setInt(p + 1, robotId);
+                for (int k = 0; k < ids.length; k++) {
+                    ps.setLong(p + 2 + k, ids[k]);
+                }
+            });
+        }
+        if (trip.statements() == 0) {
+            return true;
+        }
+        try {
+            trip.commit(c, queryTimeoutS);
+            return true;
+        } catch (SQLException e) {
+            if (e.getErrorCode() == ER_PARSE_ERROR) { // multi-statements not allowed: nothing ran
+                multiStatements = Boolean.FALSE;
+                return false;
+            }
+            throw e;
+        }
+    }
+
+    /** Whether answers go as one round trip, found out on the first answer. */
+    private boolean oneRoundTrip(Connection c) throws SQLException {
+        Boolean multi = multiStatements;
+        if (multi == null) {
+            multi = RoundTrip.supported(c);
+            multiStatements = multi;
+        }
+        return multi;
+    }
+
+    private void remember(int robotId, SensorAnswer answer) {
+        if (!answer.distances().isEmpty()) {
+            distanceTimes.computeIfAbsent(robotId, id -> new ReadingTimes()).add(answer.simTimeMs());
+        }
     }
 
     @Override
@@ -408,10 +498,15 @@ public final class JdbcRobotLink implements RobotLink {
 
     private static void bindBattery(PreparedStatement ps, int robotId, long simTimeMs, BatteryReading reading)
             throws SQLException {
-        ps.setInt(1, robotId);
-        ps.setLong(2, simTimeMs);
-        ps.setDouble(3, reading.levelPct());
-        ps.setBoolean(4, reading.charging());
+        bindBattery(ps, 1, robotId, simTimeMs, reading);
+    }
+
+    private static void bindBattery(PreparedStatement ps, int first, int robotId, long simTimeMs, BatteryReading reading)
+            throws SQLException {
+        ps.setInt(first, robotId);
+        ps.setLong(first + 1, simTimeMs);
+        ps.setDouble(first + 2, reading.levelPct());
+        ps.setBoolean(first + 3, reading.charging());
     }
 
     private static void rollbackQuietly(Connection c, Exception cause) {

@@ -8,6 +8,7 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
@@ -157,6 +158,89 @@ class JdbcRobotLinkTest {
             assertThat(writer.prune(1, new RetentionPolicy(2, 1))).isEqualTo(4 * 2);
             assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms) FROM distance_sensor_data WHERE robot_id = 1"))
                     .containsExactly(4L, 29 * 32L);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void onMariaDbAnAnswerIsOneRoundTripOnH2AStatementEach(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            AtomicInteger roundTrips = new AtomicInteger();
+            try (RobotLink link = new JdbcRobotLink(counting(db.dataSource(), roundTrips))) {
+                db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', 1), (1, 'DS', 1)");
+                long[] ids = link.pendingRequests(1).stream().mapToLong(SensorRequest::id).toArray();
+                List<DistanceReading> ds = List.of(new DistanceReading(0, -0.5, 0.75, 2), new DistanceReading(1, 0.5, 2, 2));
+                roundTrips.set(0);
+                link.answer(1, new SensorAnswer(96, new GpsReading(0.5, 1.5), new IuReading(0, 0, 0.25), ds,
+                        new BatteryReading(88.5, true), ids));
+                if (kind == DatabaseKind.MARIADB) {
+                    assertThat(roundTrips).as("readings, marks and commit together").hasValue(1);
+                } else {
+                    assertThat(roundTrips.get()).isGreaterThanOrEqualTo(6);
+                }
+            }
+            assertThat(one(db, "SELECT x_m, y_m FROM gps_stored_values WHERE sim_time_ms = 96")).containsExactly(0.5, 1.5);
+            assertThat(one(db, "SELECT yaw_rad FROM iudata WHERE sim_time_ms = 96")).containsExactly(0.25);
+            assertThat(one(db, "SELECT COUNT(*), MIN(distance_m), MAX(distance_m) FROM distance_sensor_data WHERE sim_time_ms = 96"))
+                    .containsExactly(2L, 0.75, 2.0);
+            assertThat(one(db, "SELECT level_pct, charging FROM battery_level WHERE sim_time_ms = 96")).containsExactly(88.5, true);
+            assertThat(one(db, "SELECT COUNT(*) FROM sensor_requests WHERE answered_sim_time_ms = 96")).containsExactly(2L);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = DatabaseKind.class, names = "MARIADB")
+    void aPoolThatRefusesMultiStatementsIsAnsweredStatementByStatement(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             com.zaxxer.hikari.HikariDataSource plain = org.proactiverobotics.db.Databases.pool(
+                     db.jdbcUrl() + (db.jdbcUrl().contains("?") ? "&" : "?") + "allowMultiQueries=false", db.user(), db.password());
+             RobotLink link = new JdbcRobotLink(plain)) {
+            for (int step = 1; step <= 2; step++) {
+                db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', " + step + ")");
+                long[] ids = link.pendingRequests(1).stream().mapToLong(SensorRequest::id).toArray();
+                link.answer(1, new SensorAnswer(step * 32L, new GpsReading(step, 0), null, List.of(), null, ids));
+            }
+            assertThat(one(db, "SELECT COUNT(*), MAX(x_m) FROM gps_stored_values")).containsExactly(2L, 2.0);
+            assertThat(link.pendingRequests(1)).isEmpty();
+        }
+    }
+
+    /** The data source, counting what goes to the server: each statement run, commit, rollback or auto-commit switch. */
+    private static javax.sql.DataSource counting(javax.sql.DataSource target, AtomicInteger count) {
+        java.lang.reflect.InvocationHandler[] statement = new java.lang.reflect.InvocationHandler[1];
+        return (javax.sql.DataSource) java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
+                new Class<?>[] {javax.sql.DataSource.class}, (proxy, method, args) -> {
+                    Object result = invoke(method, target, args);
+                    if (!method.getName().equals("getConnection")) {
+                        return result;
+                    }
+                    Connection c = (Connection) result;
+                    return java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
+                            new Class<?>[] {Connection.class}, (cp, cm, cargs) -> {
+                                if (List.of("commit", "rollback", "setAutoCommit").contains(cm.getName())) {
+                                    count.incrementAndGet();
+                                }
+                                Object r = invoke(cm, c, cargs);
+                                if (r instanceof java.sql.Statement s) {
+                                    Class<?> type = r instanceof PreparedStatement ? PreparedStatement.class : java.sql.Statement.class;
+                                    return java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
+                                            new Class<?>[] {type}, (sp, sm, sargs) -> {
+                                                if (sm.getName().startsWith("execute")) {
+                                                    count.incrementAndGet();
+                                                }
+                                                return invoke(sm, s, sargs);
+                                            });
+                                }
+                                return r;
+                            });
+                });
+    }
+
+    private static Object invoke(java.lang.reflect.Method m, Object target, Object[] args) throws Throwable {
+        try {
+            return m.invoke(target, args);
+        } catch (java.lang.reflect.InvocationTargetException e) {
+            throw e.getCause();
         }
     }
 

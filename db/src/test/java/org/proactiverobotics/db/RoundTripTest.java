@@ -1,0 +1,80 @@
+package org.proactiverobotics.db;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.sql.Connection;
+import java.sql.DriverManager;
+import java.sql.ResultSet;
+import java.sql.SQLException;
+import java.sql.Statement;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+/** A transaction as one multi-statement round trip: all of it or nothing, and only where the server takes it. */
+class RoundTripTest {
+
+    private static RoundTrip twoInserts(int robotId, String secondTable) {
+        MultiRow rows = MultiRow.insert("battery_level", "robot_id", "sim_time_ms", "level_pct", "charging");
+        return new RoundTrip()
+                .addRows(rows, 4, 2, (ps, p, r) -> {
+                    ps.setInt(p, robotId);
+                    ps.setLong(p + 1, 32L * r);
+                    ps.setDouble(p + 2, 90 - r);
+                    ps.setBoolean(p + 3, false);
+                })
+                .add("INSERT INTO " + secondTable + " (robot_id, sim_time_ms, x_m, y_m) VALUES (?, ?, ?, ?)", 4, (ps, p) -> {
+                    ps.setInt(p, robotId);
+                    ps.setLong(p + 1, 64);
+                    ps.setDouble(p + 2, 1.25);
+                    ps.setDouble(p + 3, -2.5e-7);
+                });
+    }
+
+    private static int inTransaction(Connection c) throws SQLException {
+        try (Statement s = c.createStatement(); ResultSet rs = s.executeQuery("SELECT @@in_transaction")) {
+            rs.next();
+            return rs.getInt(1);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void itsStatementsCommitTogetherOrNotAtAll(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); Connection c = db.dataSource().getConnection()) {
+            assertThat(RoundTrip.supported(c)).isEqualTo(kind == DatabaseKind.MARIADB);
+            Assumptions.assumeTrue(kind == DatabaseKind.MARIADB, "a round trip is for MariaDB and MySQL only");
+            RoundTrip trip = twoInserts(3, "gps_stored_values");
+            assertThat(trip.statements()).isEqualTo(2);
+            trip.commit(c, 0);
+            assertThat(db.count("battery_level")).isEqualTo(2);
+            assertThat(db.count("gps_stored_values")).isEqualTo(1);
+            try (Statement s = c.createStatement(); ResultSet rs = s.executeQuery("SELECT x_m, y_m FROM gps_stored_values")) {
+                rs.next();
+                assertThat(rs.getDouble(1)).isEqualTo(1.25);
+                assertThat(rs.getDouble(2)).isEqualTo(-2.5e-7);
+            }
+
+            assertThatThrownBy(() -> twoInserts(4, "no_such_table").commit(c, 0)).isInstanceOf(SQLException.class)
+                    .hasMessageContaining("no_such_table");
+            assertThat(db.count("battery_level")).as("the first insert rolled back").isEqualTo(2);
+            assertThat(inTransaction(c)).as("and the transaction ended").isZero();
+            twoInserts(5, "gps_stored_values").commit(c, 0);
+            assertThat(db.count("battery_level")).as("the connection goes on").isEqualTo(4);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = DatabaseKind.class, names = "MARIADB")
+    void aServerThatRefusesMultiStatementsSaysSoAndRunsNone(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             Connection plain = DriverManager.getConnection(db.jdbcUrl() + (db.jdbcUrl().contains("?") ? "&" : "?")
+                     + "allowMultiQueries=false", db.user(), db.password())) {
+            assertThatThrownBy(() -> twoInserts(3, "gps_stored_values").commit(plain, 0))
+                    .isInstanceOfSatisfying(SQLException.class, e -> assertThat(e.getErrorCode()).isEqualTo(1064));
+            assertThat(db.count("battery_level")).isZero();
+            assertThat(inTransaction(plain)).isZero();
+        }
+    }
+}
