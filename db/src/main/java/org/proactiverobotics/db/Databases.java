@@ -102,14 +102,27 @@ public final class Databases {
         // a JDBC batch as one round trip (the engine's changed queue rows, map chunks, requests;
         // the robot's readings): the MariaDB driver bulk-sends only inserts unless asked, and
         // MySQL's rewrites nothing unless asked. A setting in the URL wins.
-        // and a transaction's statements as one multi-statement round trip (RoundTrip); all our SQL has '?' for values
-        if ((jdbcUrl.startsWith("jdbc:mariadb:") || jdbcUrl.startsWith("jdbc:mysql:")) && !jdbcUrl.contains("allowMultiQueries")) {
-            config.addDataSourceProperty("allowMultiQueries", "true");
-        }
         if (jdbcUrl.startsWith("jdbc:mariadb:") && !jdbcUrl.contains("useBulkStmts")) {
             config.addDataSourceProperty("useBulkStmts", "true");
         } else if (jdbcUrl.startsWith("jdbc:mysql:") && !jdbcUrl.contains("rewriteBatchedStatements")) {
             config.addDataSourceProperty("rewriteBatchedStatements", "true");
+        }
+        return config;
+    }
+
+    /**
+     * Lets a pool's connections take a transaction as one multi-statement round trip
+     * ({@link RoundTrip}) on MariaDB and MySQL; a setting in the URL wins. Only for the pools that
+     * need it: stacked statements widen what an injected value could do (all our SQL binds values
+     * through '?').
+     *
+     * @param config  a configuration from {@link #config}
+     * @param jdbcUrl its URL
+     * @return the configuration
+     */
+    public static HikariConfig allowMultiStatements(HikariConfig config, String jdbcUrl) {
+        if ((jdbcUrl.startsWith("jdbc:mariadb:") || jdbcUrl.startsWith("jdbc:mysql:")) && !jdbcUrl.contains("allowMultiQueries")) {
+            config.addDataSourceProperty("allowMultiQueries", "true");
         }
         return config;
     }

@@ -10,10 +10,11 @@ import java.util.Locale;
 
 /**
  * One transaction sent to a MariaDB or MySQL server as one round trip:
- * {@code START TRANSACTION; s1; s2; ...; COMMIT} in a single multi-statement text (the pools of
- * {@link Databases} allow multi-statements on those drivers), instead of a round trip per statement
- * plus three for the transaction's control. All or nothing: when a statement fails the server runs
- * none after it, and this sends {@code ROLLBACK}. Not for H2, where a statement costs no round trip.
+ * {@code START TRANSACTION; s1; s2; ...; COMMIT} in a single multi-statement text, on a connection
+ * that allows multi-statements (the driver setting {@code allowMultiQueries=true}; see
+ * {@link #allowed}), instead of a round trip per statement plus three for the transaction's
+ * control. When a statement fails the server runs none after it, and this sends {@code ROLLBACK}.
+ * Not for H2, where a statement costs no round trip.
  */
 public final class RoundTrip {
 
@@ -28,6 +29,9 @@ public final class RoundTrip {
         void bind(PreparedStatement ps, int first) throws SQLException;
     }
 
+    /** MariaDB's and MySQL's syntax error: what a server says to multi-statements it does not allow. */
+    private static final int ER_PARSE_ERROR = 1064;
+
     private final StringBuilder sql = new StringBuilder("START TRANSACTION");
     private final List<Binder> binders = new ArrayList<>();
     private final List<Integer> firsts = new ArrayList<>();
@@ -35,16 +39,33 @@ public final class RoundTrip {
     private int statements;
 
     /**
+     * Asks once per connection's pool, not per transaction: a MariaDB or MySQL connection is
+     * tried with a two-statement query.
+     *
      * @param c a connection
-     * @return whether its server takes a transaction as one round trip (MariaDB, MySQL)
-     * @throws SQLException when the connection cannot say
+     * @return whether it takes a transaction as one round trip (MariaDB or MySQL, multi-statements allowed)
+     * @throws SQLException when the connection fails otherwise than by refusing multi-statements
      */
-    public static boolean supported(Connection c) throws SQLException {
+    public static boolean allowed(Connection c) throws SQLException {
         if (MultiRow.isH2(c)) {
             return false;
         }
         String product = c.getMetaData().getDatabaseProductName().toLowerCase(Locale.ROOT);
-        return product.contains("mariadb") || product.contains("mysql");
+        if (!product.contains("mariadb") && !product.contains("mysql")) {
+            return false;
+        }
+        try (Statement s = c.createStatement()) {
+            s.execute("SELECT 1; SELECT 2");
+            while (s.getMoreResults() || s.getUpdateCount() != -1) {
+                // drain both results
+            }
+            return true;
+        } catch (SQLException e) {
+            if (e.getErrorCode() == ER_PARSE_ERROR) {
+                return false;
+            }
+            throw e;
+        }
     }
 
     /**
@@ -94,17 +115,17 @@ public final class RoundTrip {
 
     /**
      * Sends the statements and the commit as one round trip on a connection in auto-commit mode.
+     * No statement time-out: MariaDB's driver would bound only the first statement of the text.
      *
-     * @param c             the connection
-     * @param queryTimeoutS the round trip's time-out, seconds, or 0 for none
-     * @throws SQLException when a statement or the commit failed: nothing of them stays
+     * @param c the connection; when this throws, give it back to a pool that discards broken
+     *          connections (Hikari does): after an I/O error its state is not known
+     * @throws SQLException when a statement or the commit failed: none of them stays, but after an
+     *         I/O error (a socket time-out, a dropped connection) whether the server committed is
+     *         not known
      */
-    public void commit(Connection c, int queryTimeoutS) throws SQLException {
+    public void commit(Connection c) throws SQLException {
         String text = sql + ";\nCOMMIT";
         try (PreparedStatement ps = c.prepareStatement(text)) {
-            if (queryTimeoutS > 0) {
-                ps.setQueryTimeout(queryTimeoutS);
-            }
             for (int i = 0; i < binders.size(); i++) {
                 binders.get(i).bind(ps, firsts.get(i));
             }

@@ -3,8 +3,8 @@ package org.proactiverobotics.db;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import com.zaxxer.hikari.HikariDataSource;
 import java.sql.Connection;
-import java.sql.DriverManager;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
@@ -39,15 +39,29 @@ class RoundTripTest {
         }
     }
 
+    /** A pool as the robot's: multi-statements allowed. */
+    private static HikariDataSource multiStatementPool(TestDatabase db) {
+        return new HikariDataSource(Databases.allowMultiStatements(Databases.config(db.jdbcUrl(), db.user(), db.password()),
+                db.jdbcUrl()));
+    }
+
+    private static long count(Connection c, String table) throws SQLException {
+        try (Statement s = c.createStatement(); ResultSet rs = s.executeQuery("SELECT COUNT(*) FROM " + table)) {
+            rs.next();
+            return rs.getLong(1);
+        }
+    }
+
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
     void itsStatementsCommitTogetherOrNotAtAll(DatabaseKind kind) throws Exception {
-        try (TestDatabase db = TestDatabases.open(kind); Connection c = db.dataSource().getConnection()) {
-            assertThat(RoundTrip.supported(c)).isEqualTo(kind == DatabaseKind.MARIADB);
+        try (TestDatabase db = TestDatabases.open(kind); HikariDataSource pool = multiStatementPool(db);
+             Connection c = pool.getConnection()) {
+            assertThat(RoundTrip.allowed(c)).isEqualTo(kind == DatabaseKind.MARIADB);
             Assumptions.assumeTrue(kind == DatabaseKind.MARIADB, "a round trip is for MariaDB and MySQL only");
             RoundTrip trip = twoInserts(3, "gps_stored_values");
             assertThat(trip.statements()).isEqualTo(2);
-            trip.commit(c, 0);
+            trip.commit(c);
             assertThat(db.count("battery_level")).isEqualTo(2);
             assertThat(db.count("gps_stored_values")).isEqualTo(1);
             try (Statement s = c.createStatement(); ResultSet rs = s.executeQuery("SELECT x_m, y_m FROM gps_stored_values")) {
@@ -56,22 +70,21 @@ class RoundTripTest {
                 assertThat(rs.getDouble(2)).isEqualTo(-2.5e-7);
             }
 
-            assertThatThrownBy(() -> twoInserts(4, "no_such_table").commit(c, 0)).isInstanceOf(SQLException.class)
+            assertThatThrownBy(() -> twoInserts(4, "no_such_table").commit(c)).isInstanceOf(SQLException.class)
                     .hasMessageContaining("no_such_table");
-            assertThat(db.count("battery_level")).as("the first insert rolled back").isEqualTo(2);
+            assertThat(count(c, "battery_level")).as("the first insert rolled back, seen in its own session").isEqualTo(2);
             assertThat(inTransaction(c)).as("and the transaction ended").isZero();
-            twoInserts(5, "gps_stored_values").commit(c, 0);
+            twoInserts(5, "gps_stored_values").commit(c);
             assertThat(db.count("battery_level")).as("the connection goes on").isEqualTo(4);
         }
     }
 
     @ParameterizedTest
     @EnumSource(value = DatabaseKind.class, names = "MARIADB")
-    void aServerThatRefusesMultiStatementsSaysSoAndRunsNone(DatabaseKind kind) throws Exception {
-        try (TestDatabase db = TestDatabases.open(kind);
-             Connection plain = DriverManager.getConnection(db.jdbcUrl() + (db.jdbcUrl().contains("?") ? "&" : "?")
-                     + "allowMultiQueries=false", db.user(), db.password())) {
-            assertThatThrownBy(() -> twoInserts(3, "gps_stored_values").commit(plain, 0))
+    void aConnectionThatRefusesMultiStatementsIsNotAllowedAndRunsNone(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); Connection plain = db.dataSource().getConnection()) {
+            assertThat(RoundTrip.allowed(plain)).as("the plain pools do not allow them").isFalse();
+            assertThatThrownBy(() -> twoInserts(3, "gps_stored_values").commit(plain))
                     .isInstanceOfSatisfying(SQLException.class, e -> assertThat(e.getErrorCode()).isEqualTo(1064));
             assertThat(db.count("battery_level")).isZero();
             assertThat(inTransaction(plain)).isZero();

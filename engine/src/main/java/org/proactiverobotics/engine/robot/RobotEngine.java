@@ -445,6 +445,9 @@ public final class RobotEngine {
 
             OccupancyMapTable mapTable = mapTable(base);
             KnownMap knownMap = new KnownMap(mapTable);
+            if (transaction != null) {
+                transaction.onRollback(knownMap::forget); // chunks of an iteration that did not commit are not in the table
+            }
             ProactiveEngine.Builder b = ProactiveEngine.builder()
                     .robotId(robotId)
                     .algorithm(algorithm)

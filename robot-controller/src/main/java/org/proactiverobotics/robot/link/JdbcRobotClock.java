@@ -50,6 +50,7 @@ public final class JdbcRobotClock implements RobotClock {
         sync = "sync".equals(timing); // in real time the engine writes while the robot steps: nothing handed off
         if (link != null) {
             link.dropHandOff();
+            link.forgetWrites(robotId); // the run's readings start again from none
         }
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);

@@ -53,8 +53,6 @@ public final class JdbcRobotLink implements RobotLink {
     private final Map<Integer, ReadingTimes> distanceTimes = new ConcurrentHashMap<>();
     /** Whether the server takes an answer as one multi-statement round trip; null until the first answer. */
     private volatile Boolean multiStatements;
-    /** MariaDB's and MySQL's syntax error: what a server that does not allow multi-statements says. */
-    private static final int ER_PARSE_ERROR = 1064;
     /** What a sync clock read with the engine's tick, for the next read of it (each taken once); null: nothing. */
     private volatile HandedOff handedOff;
 
@@ -100,6 +98,11 @@ public final class JdbcRobotLink implements RobotLink {
         handedOff = new HandedOff(robotId, command, List.copyOf(pending), false, false);
     }
 
+    /** Forgets the times of the readings written for a robot (its run begins again: its readings were deleted). */
+    void forgetWrites(int robotId) {
+        distanceTimes.remove(robotId);
+    }
+
     /** Forgets what was handed off (the robot published a step: the engine may write again). */
     void dropHandOff() {
         handedOff = null;
@@ -129,7 +132,8 @@ public final class JdbcRobotLink implements RobotLink {
     @Override
     public void answer(int robotId, SensorAnswer answer) throws LinkException {
         withConnection("writing " + answer.readingCount() + " reading(s)", c -> {
-            if (oneRoundTrip(c) && answerInOneRoundTrip(c, robotId, answer)) {
+            if (oneRoundTrip(c)) {
+                answerInOneRoundTrip(c, robotId, answer);
                 remember(robotId, answer);
                 return null;
             }
@@ -192,13 +196,8 @@ public final class JdbcRobotLink implements RobotLink {
         });
     }
 
-    /**
-     * The answer as one transaction in one round trip (MariaDB, MySQL).
-     *
-     * @return false, having written nothing, when the server refuses multi-statements (a pool not
-     *         made by {@code Databases}): this link then answers statement by statement from now on
-     */
-    private boolean answerInOneRoundTrip(Connection c, int robotId, SensorAnswer answer) throws SQLException {
+    /** The answer as one transaction in one round trip (MariaDB, MySQL). */
+    private void answerInOneRoundTrip(Connection c, int robotId, SensorAnswer answer) throws SQLException {
         long t = answer.simTimeMs();
         RoundTrip trip = new RoundTrip();
         if (answer.gps() != null) {
@@ -244,26 +243,20 @@ public final class JdbcRobotLink implements RobotLink {
                 }
             });
         }
-        if (trip.statements() == 0) {
-            return true;
-        }
-        try {
-            trip.commit(c, queryTimeoutS);
-            return true;
-        } catch (SQLException e) {
-            if (e.getErrorCode() == ER_PARSE_ERROR) { // multi-statements not allowed: nothing ran
-                multiStatements = Boolean.FALSE;
-                return false;
-            }
-            throw e;
+        if (trip.statements() > 0) {
+            trip.commit(c);
         }
     }
 
-    /** Whether answers go as one round trip, found out on the first answer. */
+    /**
+     * Whether answers go as one round trip, found out on the first answer: not with a statement
+     * time-out (MariaDB's driver bounds only the first statement of a multi-statement text), nor
+     * on a server that refuses multi-statements (a pool not opened by {@link RobotPool}).
+     */
     private boolean oneRoundTrip(Connection c) throws SQLException {
         Boolean multi = multiStatements;
         if (multi == null) {
-            multi = RoundTrip.supported(c);
+            multi = queryTimeoutS == 0 && RoundTrip.allowed(c);
             multiStatements = multi;
         }
         return multi;

@@ -16,13 +16,20 @@ final class ReadingTimes {
     private long added;
 
     /**
-     * Records a reading's time; a time not after the newest one is the same reading and ignored.
+     * Records a reading's time. The newest time again is the same reading, ignored; an earlier
+     * one is a new run (its clock back at 0): what was held is forgotten.
      *
      * @param simTimeMs the reading's simulated time, ms
      */
     synchronized void add(long simTimeMs) {
-        if (added > 0 && simTimeMs <= ring[(int) ((added - 1) % ring.length)]) {
-            return;
+        if (added > 0) {
+            long newest = ring[(int) ((added - 1) % ring.length)];
+            if (simTimeMs == newest) {
+                return;
+            }
+            if (simTimeMs < newest) {
+                added = 0;
+            }
         }
         ring[(int) (added % ring.length)] = simTimeMs;
         added++;

@@ -29,7 +29,8 @@ public final class RobotPool {
      * @return a started pool (it does not fail when the database is not there yet); close it when done
      */
     public static HikariDataSource open(String jdbcUrl, String user, String password, long connectionTimeoutMs) {
-        HikariConfig config = Databases.config(jdbcUrl, user, password);
+        // the robot's answers go as one round trip each (JdbcRobotLink)
+        HikariConfig config = Databases.allowMultiStatements(Databases.config(jdbcUrl, user, password), jdbcUrl);
         config.setConnectionTimeout(Math.max(250, connectionTimeoutMs));
         config.setValidationTimeout(250);
         config.setMaximumPoolSize(2);

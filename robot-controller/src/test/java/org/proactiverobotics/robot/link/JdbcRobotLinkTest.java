@@ -8,7 +8,6 @@ import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
@@ -137,8 +136,10 @@ class JdbcRobotLinkTest {
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
     void aLinkThatDidNotWriteTheReadingsPrunesTheSameRows(DatabaseKind kind) throws Exception {
-        try (TestDatabase db = TestDatabases.open(kind); RobotLink writer = new JdbcRobotLink(db.dataSource());
-             RobotLink restarted = new JdbcRobotLink(db.dataSource())) {
+        List<String> writerSent = new java.util.concurrent.CopyOnWriteArrayList<>();
+        List<String> restartedSent = new java.util.concurrent.CopyOnWriteArrayList<>();
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink writer = new JdbcRobotLink(recording(db.dataSource(), writerSent));
+             RobotLink restarted = new JdbcRobotLink(recording(db.dataSource(), restartedSent))) {
             List<DistanceReading> ds = List.of(new DistanceReading(0, 0, 0.3, 1), new DistanceReading(1, 1, 0.4, 1));
             for (int step = 0; step < 30; step++) {
                 for (int robot = 1; robot <= 2; robot++) {
@@ -148,6 +149,8 @@ class JdbcRobotLinkTest {
             // robot 1's cut-off comes from what the writer remembers, robot 2's from the table
             assertThat(writer.prune(1, new RetentionPolicy(5, 1))).isEqualTo(25 * 2);
             assertThat(restarted.prune(2, new RetentionPolicy(5, 1))).isEqualTo(25 * 2);
+            assertThat(writerSent).as("the writer knows its cut-off").noneMatch(sql -> sql.contains("SELECT DISTINCT"));
+            assertThat(restartedSent).as("a restarted link asks").anyMatch(sql -> sql.contains("SELECT DISTINCT"));
             for (int robot = 1; robot <= 2; robot++) {
                 assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms) FROM distance_sensor_data WHERE robot_id = " + robot))
                         .containsExactly(10L, 25 * 32L);
@@ -163,20 +166,42 @@ class JdbcRobotLinkTest {
 
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
+    void aNewRunPrunesByItsOwnReadingsOnly(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); JdbcRobotLink link = new JdbcRobotLink(db.dataSource())) {
+            List<DistanceReading> ds = List.of(new DistanceReading(0, 0, 0.3, 1));
+            link.clock().beginRun(1, "sync");
+            for (int step = 0; step < 30; step++) {
+                link.answer(1, new SensorAnswer(step * 32L, null, null, ds, null, new long[0]));
+            }
+            link.clock().beginRun(1, "sync"); // a second run: its clock starts again from 0
+            for (int step = 0; step < 8; step++) {
+                link.answer(1, new SensorAnswer(step * 32L, null, null, ds, null, new long[0]));
+            }
+            link.prune(1, new RetentionPolicy(5, 1));
+            assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms), MAX(sim_time_ms) FROM distance_sensor_data WHERE robot_id = 1"))
+                    .containsExactly(5L, 3 * 32L, 7 * 32L);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
     void onMariaDbAnAnswerIsOneRoundTripOnH2AStatementEach(DatabaseKind kind) throws Exception {
-        try (TestDatabase db = TestDatabases.open(kind)) {
-            AtomicInteger roundTrips = new AtomicInteger();
-            try (RobotLink link = new JdbcRobotLink(counting(db.dataSource(), roundTrips))) {
+        try (TestDatabase db = TestDatabases.open(kind);
+             com.zaxxer.hikari.HikariDataSource robotPool = RobotPool.open(db.jdbcUrl(), db.user(), db.password())) {
+            List<String> sent = new java.util.concurrent.CopyOnWriteArrayList<>();
+            try (RobotLink link = new JdbcRobotLink(recording(robotPool, sent))) {
                 db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', 1), (1, 'DS', 1)");
                 long[] ids = link.pendingRequests(1).stream().mapToLong(SensorRequest::id).toArray();
                 List<DistanceReading> ds = List.of(new DistanceReading(0, -0.5, 0.75, 2), new DistanceReading(1, 0.5, 2, 2));
-                roundTrips.set(0);
+                link.answer(1, new SensorAnswer(64, null, null, List.of(), null, new long[0])); // finds out what the server takes
+                sent.clear();
                 link.answer(1, new SensorAnswer(96, new GpsReading(0.5, 1.5), new IuReading(0, 0, 0.25), ds,
                         new BatteryReading(88.5, true), ids));
                 if (kind == DatabaseKind.MARIADB) {
-                    assertThat(roundTrips).as("readings, marks and commit together").hasValue(1);
+                    assertThat(sent).as("readings, marks and commit together").hasSize(1);
+                    assertThat(sent.get(0)).startsWith("START TRANSACTION").endsWith("COMMIT");
                 } else {
-                    assertThat(roundTrips.get()).isGreaterThanOrEqualTo(6);
+                    assertThat(sent.size()).isGreaterThanOrEqualTo(6);
                 }
             }
             assertThat(one(db, "SELECT x_m, y_m FROM gps_stored_values WHERE sim_time_ms = 96")).containsExactly(0.5, 1.5);
@@ -192,7 +217,7 @@ class JdbcRobotLinkTest {
     @EnumSource(value = DatabaseKind.class, names = "MARIADB")
     void aPoolThatRefusesMultiStatementsIsAnsweredStatementByStatement(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind);
-             com.zaxxer.hikari.HikariDataSource plain = org.proactiverobotics.db.Databases.pool(
+             com.zaxxer.hikari.HikariDataSource plain = RobotPool.open(
                      db.jdbcUrl() + (db.jdbcUrl().contains("?") ? "&" : "?") + "allowMultiQueries=false", db.user(), db.password());
              RobotLink link = new JdbcRobotLink(plain)) {
             for (int step = 1; step <= 2; step++) {
@@ -205,9 +230,8 @@ class JdbcRobotLinkTest {
         }
     }
 
-    /** The data source, counting what goes to the server: each statement run, commit, rollback or auto-commit switch. */
-    private static javax.sql.DataSource counting(javax.sql.DataSource target, AtomicInteger count) {
-        java.lang.reflect.InvocationHandler[] statement = new java.lang.reflect.InvocationHandler[1];
+    /** The data source, recording what goes to the server: each statement's SQL as it is run, and commit, rollback or an auto-commit switch by name. */
+    private static javax.sql.DataSource recording(javax.sql.DataSource target, List<String> sent) {
         return (javax.sql.DataSource) java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
                 new Class<?>[] {javax.sql.DataSource.class}, (proxy, method, args) -> {
                     Object result = invoke(method, target, args);
@@ -218,15 +242,17 @@ class JdbcRobotLinkTest {
                     return java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
                             new Class<?>[] {Connection.class}, (cp, cm, cargs) -> {
                                 if (List.of("commit", "rollback", "setAutoCommit").contains(cm.getName())) {
-                                    count.incrementAndGet();
+                                    sent.add(cm.getName());
                                 }
                                 Object r = invoke(cm, c, cargs);
                                 if (r instanceof java.sql.Statement s) {
+                                    String prepared = cm.getName().equals("prepareStatement") ? (String) cargs[0] : null;
                                     Class<?> type = r instanceof PreparedStatement ? PreparedStatement.class : java.sql.Statement.class;
                                     return java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
                                             new Class<?>[] {type}, (sp, sm, sargs) -> {
                                                 if (sm.getName().startsWith("execute")) {
-                                                    count.incrementAndGet();
+                                                    sent.add(prepared != null ? prepared : sargs != null && sargs.length > 0
+                                                            ? String.valueOf(sargs[0]) : sm.getName());
                                                 }
                                                 return invoke(sm, s, sargs);
                                             });

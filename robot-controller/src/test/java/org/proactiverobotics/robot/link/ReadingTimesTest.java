@@ -20,14 +20,26 @@ class ReadingTimesTest {
     }
 
     @Test
-    void aTimeNotAfterTheNewestIsTheSameReading() {
+    void theNewestTimeAgainIsTheSameReading() {
         ReadingTimes times = new ReadingTimes();
         times.add(64);
         times.add(64);
-        times.add(32);
         times.add(96);
         assertThat(times.newest(1)).isEqualTo(96);
         assertThat(times.newest(2)).isEqualTo(64);
+        assertThat(times.newest(3)).isEqualTo(-1);
+    }
+
+    @Test
+    void anEarlierTimeIsANewRunAndForgetsTheOldOne() {
+        ReadingTimes times = new ReadingTimes();
+        for (long t = 1; t <= 100; t++) {
+            times.add(t * 32);
+        }
+        times.add(0);
+        times.add(32);
+        assertThat(times.newest(1)).isEqualTo(32);
+        assertThat(times.newest(2)).isZero();
         assertThat(times.newest(3)).isEqualTo(-1);
     }
 
