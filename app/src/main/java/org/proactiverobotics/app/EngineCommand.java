@@ -152,7 +152,7 @@ public final class EngineCommand implements Callable<Integer> {
         int[] ids = ids();
         int robots = ids.length + (standbyIds == null ? 0 : RobotIds.parse(standbyIds).length);
         int threadCount = Math.min(robots, threads > 0 ? threads : 2 * Runtime.getRuntime().availableProcessors());
-        HikariConfig config = Databases.config(db.url(), db.user(), db.password());
+        HikariConfig config = Databases.allowMultiStatements(Databases.config(db.url(), db.user(), db.password()), db.url());
         config.setMaximumPoolSize(2 * threadCount + 2); // an iteration's connection and a read beside it, per thread
         try (HikariDataSource pool = new HikariDataSource(config)) {
             String name = engineName != null ? engineName : defaultName();

@@ -111,6 +111,19 @@ public final class Databases {
     }
 
     /**
+     * A pool as {@link #pool} makes, whose connections also take multi-statements: for an
+     * engine, whose iteration's writes then go with its commit as one round trip.
+     *
+     * @param jdbcUrl  a JDBC URL
+     * @param user     the user, or null
+     * @param password the password, or null
+     * @return a started pool; close it when done
+     */
+    public static HikariDataSource multiStatementPool(String jdbcUrl, String user, String password) {
+        return new HikariDataSource(allowMultiStatements(config(jdbcUrl, user, password), jdbcUrl));
+    }
+
+    /**
      * Lets a pool's connections take a transaction as one multi-statement round trip
      * ({@link RoundTrip}) on MariaDB and MySQL; a setting in the URL wins. Only for the pools that
      * need it: stacked statements widen what an injected value could do (all our SQL binds values

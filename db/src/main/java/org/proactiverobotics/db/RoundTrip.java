@@ -32,11 +32,29 @@ public final class RoundTrip {
     /** MariaDB's and MySQL's syntax error: what a server says to multi-statements it does not allow. */
     private static final int ER_PARSE_ERROR = 1064;
 
-    private final StringBuilder sql = new StringBuilder("START TRANSACTION");
+    private final boolean opens;
+    private final List<String> texts = new ArrayList<>();
     private final List<Binder> binders = new ArrayList<>();
     private final List<Integer> firsts = new ArrayList<>();
     private int parameters;
     private int statements;
+
+    /** A round trip that opens its transaction: {@code START TRANSACTION; ...; COMMIT}. */
+    public RoundTrip() {
+        this(true);
+    }
+
+    private RoundTrip(boolean opens) {
+        this.opens = opens;
+    }
+
+    /**
+     * @return a round trip that ends a transaction already open on the connection (auto-commit
+     *         off, statements run in it before): {@code ...; COMMIT}
+     */
+    public static RoundTrip endingTransaction() {
+        return new RoundTrip(false);
+    }
 
     /**
      * Asks once per connection's pool, not per transaction: a MariaDB or MySQL connection is
@@ -77,7 +95,7 @@ public final class RoundTrip {
      * @return this
      */
     public RoundTrip add(String statement, int parameters, Binder binder) {
-        sql.append(";\n").append(statement);
+        texts.add(statement);
         firsts.add(this.parameters + 1);
         binders.add(binder);
         this.parameters += parameters;
@@ -86,26 +104,25 @@ public final class RoundTrip {
     }
 
     /**
-     * Adds rows as one multi-row statement of {@code insert}'s words.
+     * Adds rows as multi-row statements of {@code insert}'s words, as few as {@link MultiRow#MAX_ROWS} allows.
      *
      * @param insert  the statement's words
      * @param columns how many values a row has
-     * @param rows    how many rows, 1 to {@link MultiRow#MAX_ROWS} (none: nothing is added)
+     * @param rows    how many rows (none: nothing is added)
      * @param binder  binds row r's values from the given parameter index
      * @return this
      */
     public RoundTrip addRows(MultiRow insert, int columns, int rows, MultiRow.RowBinder binder) {
-        if (rows == 0) {
-            return this;
+        for (int from = 0; from < rows; from += MultiRow.MAX_ROWS) {
+            int first = from;
+            int n = Math.min(MultiRow.MAX_ROWS, rows - from);
+            add(insert.sql(false, n), n * columns, (ps, p) -> {
+                for (int r = 0; r < n; r++) {
+                    binder.bind(ps, p + r * columns, first + r);
+                }
+            });
         }
-        if (rows > MultiRow.MAX_ROWS) {
-            throw new IllegalArgumentException("at most " + MultiRow.MAX_ROWS + " rows in one statement: " + rows);
-        }
-        return add(insert.sql(false, rows), rows * columns, (ps, first) -> {
-            for (int r = 0; r < rows; r++) {
-                binder.bind(ps, first + r * columns, r);
-            }
-        });
+        return this;
     }
 
     /** @return how many statements were added (the transaction's control not counted) */
@@ -124,7 +141,7 @@ public final class RoundTrip {
      *         not known
      */
     public void commit(Connection c) throws SQLException {
-        String text = sql + ";\nCOMMIT";
+        String text = (opens ? "START TRANSACTION;\n" : "") + String.join(";\n", texts) + ";\nCOMMIT";
         try (PreparedStatement ps = c.prepareStatement(text)) {
             for (int i = 0; i < binders.size(); i++) {
                 binders.get(i).bind(ps, firsts.get(i));

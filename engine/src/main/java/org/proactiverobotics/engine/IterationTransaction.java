@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.logging.Logger;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.RoundTrip;
 
 /**
  * One database transaction per engine iteration, on one explicit connection: between
@@ -32,6 +33,10 @@ public final class IterationTransaction implements DataSource {
     private final List<Runnable> rollbackListeners = new CopyOnWriteArrayList<>();
     private final List<BeforeCommit> beforeCommit = new CopyOnWriteArrayList<>();
     private Connection shared;
+    /** Whether the pool's connections take multi-statements (MariaDB, MySQL); null until the first iteration. */
+    private Boolean multiStatements;
+    /** The open iteration's writes that are sent with its commit, or null (run at once instead). */
+    private RoundTrip deferred;
     private Thread owner;
     private boolean rollbackOnly;
     private long number;
@@ -75,11 +80,15 @@ public final class IterationTransaction implements DataSource {
         try {
             c = pool.getConnection();
             c.setAutoCommit(false);
+            if (multiStatements == null) {
+                multiStatements = RoundTrip.allowed(c);
+            }
         } catch (SQLException e) {
             closeQuietly(c);
             throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
         }
         shared = c;
+        deferred = multiStatements ? RoundTrip.endingTransaction() : null;
         owner = Thread.currentThread();
         rollbackOnly = false;
         number++;
@@ -92,6 +101,17 @@ public final class IterationTransaction implements DataSource {
     public Connection connection() {
         Connection c = shared;
         return c != null && Thread.currentThread() == owner ? c : null;
+    }
+
+    /**
+     * Where the open iteration's writes that nobody reads back go: on MariaDB and MySQL they are
+     * sent with the commit, as one round trip; elsewhere (H2, where a statement costs no round
+     * trip) there is none and they run at once on {@link #connection()}.
+     *
+     * @return the iteration's deferred writes when called on its thread over such a database, else null
+     */
+    public RoundTrip deferred() {
+        return connection() != null ? deferred : null;
     }
 
     /** @return a number that changes with every {@link #begin()}: what a per-iteration cache is keyed by */
@@ -128,6 +148,11 @@ public final class IterationTransaction implements DataSource {
                 for (BeforeCommit work : beforeCommit) {
                     work.run(c);
                 }
+                RoundTrip trip = deferred;
+                deferred = null;
+                if (trip != null && trip.statements() > 0) {
+                    trip.commit(c); // the writes and COMMIT in one round trip; the driver's commit below then sends nothing
+                }
             } catch (SQLException | RuntimeException e) {
                 rollback();
                 throw e;
@@ -148,6 +173,7 @@ public final class IterationTransaction implements DataSource {
     private void end(boolean commit) throws SQLException {
         Connection c = shared;
         shared = null;
+        deferred = null;
         owner = null;
         if (c == null) {
             return;

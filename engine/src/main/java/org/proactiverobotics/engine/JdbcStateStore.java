@@ -13,6 +13,7 @@ import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
+import org.proactiverobotics.db.RoundTrip;
 
 /**
  * Saves the engine state through JDBC in the tables {@code engine_state}, {@code engine_queue}
@@ -186,6 +187,10 @@ public final class JdbcStateStore implements StateStore {
 
     private List<String> save(Connection c, int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory,
                               List<RuleFailure> failures, List<String> previous) throws SQLException {
+        RoundTrip trip = transaction == null ? null : transaction.deferred();
+        if (trip != null) {
+            return save(trip, c, robotId, iteration, nextQueue, memory, failures, previous);
+        }
         String memoryJson = codec.memoryJson(memory);
         try (PreparedStatement ps = c.prepareStatement(
                 "UPDATE engine_state SET iteration = ?, memory_json = ?, saved_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ?")) {
@@ -205,26 +210,11 @@ public final class JdbcStateStore implements StateStore {
         // Only the rows that differ from the saved ones are written, as one upsert (one statement on H2 and
         // MariaDB alike, where a batch was a statement per row); only a shrink deletes.
         long saved = previous != null ? previous.size() : countQueueRows(c, robotId);
-        List<String> rows = new ArrayList<>(nextQueue.size());
-        List<QueueRow> changed = new ArrayList<>();
-        int position = 0;
-        for (Rule rule : nextQueue) {
-            String type = codec.ruleType(rule);
-            String json = codec.ruleJson(rule);
-            String row = type + '\u0000' + json;
-            rows.add(row);
-            if (!(position < saved && previous != null && row.equals(previous.get(position)))) {
-                changed.add(new QueueRow(position, type, json));
-            }
-            position++;
-        }
-        UPSERT_QUEUE.write(c, changed.size(), (ps, p, r) -> {
-            QueueRow q = changed.get(r);
-            ps.setInt(p, robotId);
-            ps.setInt(p + 1, q.position());
-            ps.setString(p + 2, q.type());
-            ps.setString(p + 3, q.json());
-        });
+        QueueDiff diff = diff(nextQueue, previous, saved);
+        List<String> rows = diff.rows();
+        List<QueueRow> changed = diff.changed();
+        int position = rows.size();
+        UPSERT_QUEUE.write(c, changed.size(), queueRows(robotId, changed));
         if (saved > position) {
             try (PreparedStatement ps = c.prepareStatement("DELETE FROM engine_queue WHERE robot_id = ? AND position >= ?")) {
                 ps.setInt(1, robotId);
@@ -248,6 +238,78 @@ public final class JdbcStateStore implements StateStore {
             }
         }
         return rows;
+    }
+
+    /**
+     * The same save as statements sent with the iteration's commit (MariaDB, MySQL): the state row
+     * as an upsert, so that no row count is needed before the commit.
+     */
+    private List<String> save(RoundTrip trip, Connection c, int robotId, long iteration, Collection<Rule> nextQueue,
+                              SharedMemory memory, List<RuleFailure> failures, List<String> previous) throws SQLException {
+        String memoryJson = codec.memoryJson(memory);
+        trip.add("INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (?, ?, ?) ON DUPLICATE KEY UPDATE"
+                + " iteration = VALUES(iteration), memory_json = VALUES(memory_json), saved_at = CURRENT_TIMESTAMP(3)", 3, (ps, p) -> {
+                    ps.setInt(p, robotId);
+                    ps.setLong(p + 1, iteration);
+                    ps.setString(p + 2, memoryJson);
+                });
+        long saved = previous != null ? previous.size() : countQueueRows(c, robotId);
+        QueueDiff diff = diff(nextQueue, previous, saved);
+        List<String> rows = diff.rows();
+        List<QueueRow> changed = diff.changed();
+        int position = rows.size();
+        trip.addRows(UPSERT_QUEUE, 4, changed.size(), queueRows(robotId, changed));
+        if (saved > position) {
+            int size = position;
+            trip.add("DELETE FROM engine_queue WHERE robot_id = ? AND position >= ?", 2, (ps, p) -> {
+                ps.setInt(p, robotId);
+                ps.setInt(p + 1, size);
+            });
+        }
+        for (RuleFailure f : List.copyOf(failures)) {
+            trip.add("INSERT INTO rule_failures (robot_id, iteration, rule, scenario, part, message) VALUES (?, ?, ?, ?, ?, ?)",
+                    6, (ps, p) -> {
+                        ps.setInt(p, robotId);
+                        ps.setLong(p + 1, f.iteration());
+                        ps.setString(p + 2, cut(f.rule(), 255));
+                        ps.setString(p + 3, cut(f.scenario(), 64));
+                        ps.setString(p + 4, f.part().name());
+                        ps.setString(p + 5, cut(f.message(), 1000));
+                    });
+        }
+        return rows;
+    }
+
+    /** Binds queue rows, one row each. */
+    private static MultiRow.RowBinder queueRows(int robotId, List<QueueRow> rows) {
+        return (ps, p, r) -> {
+            QueueRow q = rows.get(r);
+            ps.setInt(p, robotId);
+            ps.setInt(p + 1, q.position());
+            ps.setString(p + 2, q.type());
+            ps.setString(p + 3, q.json());
+        };
+    }
+
+    /** nextQueue's rows (type and fields) and those that differ from the saved ones. */
+    private record QueueDiff(List<String> rows, List<QueueRow> changed) {
+    }
+
+    private QueueDiff diff(Collection<Rule> nextQueue, List<String> previous, long saved) {
+        List<String> rows = new ArrayList<>(nextQueue.size());
+        List<QueueRow> changed = new ArrayList<>();
+        int position = 0;
+        for (Rule rule : nextQueue) {
+            String type = codec.ruleType(rule);
+            String json = codec.ruleJson(rule);
+            String row = type + '\u0000' + json;
+            rows.add(row);
+            if (!(position < saved && previous != null && row.equals(previous.get(position)))) {
+                changed.add(new QueueRow(position, type, json));
+            }
+            position++;
+        }
+        return new QueueDiff(rows, changed);
     }
 
     /** A queue row to write: the rule at a position, by type and fields. */

@@ -101,7 +101,7 @@ public final class Mission {
         }
         WorldSpec world = options.world();
         int robotId = options.robotId();
-        try (HikariDataSource enginePool = Databases.pool(options.jdbcUrl(), options.user(), options.password())) {
+        try (HikariDataSource enginePool = Databases.multiStatementPool(options.jdbcUrl(), options.user(), options.password())) {
             Schema.apply(enginePool);
             clearRobotRows(enginePool, robotId);
 

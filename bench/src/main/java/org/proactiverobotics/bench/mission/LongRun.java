@@ -65,7 +65,7 @@ public final class LongRun {
         long sinceReportNs = 0;
         long sinceReportSteps = 0;
         long start = System.nanoTime();
-        try (HikariDataSource pool = Databases.pool(url, user, password);
+        try (HikariDataSource pool = Databases.multiStatementPool(url, user, password);
              Rig rig = Rig.jdbc(Worlds.endless(WorldFiles.bundled(worldName)), 1, pool, url, user, password)) {
             GroundTruth truth = rig.truth();
             for (long k = 1; k <= steps; k++) {

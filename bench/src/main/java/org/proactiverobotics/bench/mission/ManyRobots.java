@@ -94,7 +94,7 @@ public final class ManyRobots {
         ExecutorService pool = threads > 1 ? Executors.newFixedThreadPool(threads) : null;
         try {
             if (!cfg.direct) {
-                var config = Databases.config(cfg.url(n), cfg.user, cfg.password);
+                var config = Databases.allowMultiStatements(Databases.config(cfg.url(n), cfg.user, cfg.password), cfg.url(n));
                 config.setMaximumPoolSize(Math.max(4, threads + 1));
                 enginePool = new HikariDataSource(config);
             }

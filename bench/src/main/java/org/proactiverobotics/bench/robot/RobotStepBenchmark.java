@@ -101,7 +101,7 @@ public class RobotStepBenchmark {
         String user = "H2".equals(database) ? "sa" : null;
         String password = "H2".equals(database) ? "" : null;
         robotPool = RobotPool.open(url, user, password);
-        enginePool = Databases.pool(url, user, password);
+        enginePool = Databases.multiStatementPool(url, user, password);
         Schema.apply(enginePool);
         WorldSpec world = new WorldSpec("bench-arena", 32, 1e9, 1, new WorldSpec.Arena(5.0),
                 new WorldSpec.Robot(0.0, -4.0, 90.0, 0.12, 0.5, 1.0),

@@ -11,6 +11,7 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
+import org.proactiverobotics.db.RoundTrip;
 import org.proactiverobotics.engine.IterationTransaction;
 
 /**
@@ -32,8 +33,8 @@ public final class JdbcRobotTables
     /** The iteration's transaction when the data source is one, else null (no snapshot, no buffering). */
     private final IterationTransaction transaction;
     private IterationSnapshot snapshot;
-    private final List<Object[]> pendingRequests = new ArrayList<>();
-    private final List<Object[]> pendingMarks = new ArrayList<>();
+    private List<Object[]> pendingRequests = new ArrayList<>();
+    private List<Object[]> pendingMarks = new ArrayList<>();
     private long snapshotLoads;
 
     private static final MultiRow INSERT_REQUESTS = MultiRow.insert("sensor_requests", "robot_id", "sensor", "iteration");
@@ -86,19 +87,28 @@ public final class JdbcRobotTables
         return transaction != null && transaction.connection() != null;
     }
 
-    /** The iteration's writes, one batch per statement, just before its commit. */
+    /** The iteration's writes, one batch per statement, just before its commit (with it, where writes are deferred). */
     private void flush(Connection c) throws SQLException {
         try {
-            insertRequests(c, pendingRequests);
-            batch(c, MARK_REACHED, pendingMarks);
+            RoundTrip trip = transaction.deferred();
+            if (trip == null) {
+                insertRequests(c, pendingRequests);
+                batch(c, MARK_REACHED, pendingMarks);
+                return;
+            }
+            List<Object[]> requests = pendingRequests;
+            trip.addRows(INSERT_REQUESTS, 3, requests.size(), (ps, p, r) -> bind(ps, p, requests.get(r)));
+            for (Object[] mark : pendingMarks) {
+                trip.add(MARK_REACHED, 3, (ps, p) -> bind(ps, p, mark));
+            }
         } finally {
             forgetIteration();
         }
     }
 
     private void forgetIteration() {
-        pendingRequests.clear();
-        pendingMarks.clear();
+        pendingRequests = new ArrayList<>(); // a deferred write may still bind the old lists
+        pendingMarks = new ArrayList<>();
         snapshot = null;
     }
 
@@ -338,14 +348,28 @@ public final class JdbcRobotTables
     }
 
     private void writeChunks(Connection c, List<MapChunk> chunks, long simTimeMs) throws SQLException {
-        UPSERT_CHUNKS.write(c, chunks.size(), (ps, p, r) -> {
+        RoundTrip trip = transaction == null ? null : transaction.deferred();
+        if (trip == null) {
+            UPSERT_CHUNKS.write(c, chunks.size(), chunkRows(chunks, simTimeMs));
+            return;
+        }
+        List<MapChunk> copies = new ArrayList<>(chunks.size()); // bound at the commit: the cells as they are now
+        for (MapChunk chunk : chunks) {
+            copies.add(new MapChunk(chunk.chunkX(), chunk.chunkY(), chunk.cells().clone()));
+        }
+        trip.addRows(UPSERT_CHUNKS, 5, copies.size(), chunkRows(copies, simTimeMs));
+    }
+
+    /** Binds chunks, one row each. */
+    private MultiRow.RowBinder chunkRows(List<MapChunk> chunks, long simTimeMs) {
+        return (ps, p, r) -> {
             MapChunk chunk = chunks.get(r);
             ps.setInt(p, robotId);
             ps.setInt(p + 1, chunk.chunkX());
             ps.setInt(p + 2, chunk.chunkY());
             ps.setBytes(p + 3, chunk.cells());
             ps.setLong(p + 4, simTimeMs);
-        });
+        };
     }
 
     @Override
@@ -439,8 +463,8 @@ public final class JdbcRobotTables
     public void send(long iteration, long simTimeMs, String scenario, String command) {
         Connection inIteration = transaction == null ? null : transaction.connection();
         if (inIteration != null) {
-            // One command per iteration: sent now, in the iteration's transaction (buffering it saves no round
-            // trip, and its id then comes before any row another connection inserts after it, as it always did).
+            // One command per iteration: sent now, in the iteration's transaction, not with its commit: its id then
+            // comes before any row another connection inserts after it (a newer command wins), as it always did.
             try (PreparedStatement ps = inIteration.prepareStatement(INSERT_COMMAND)) {
                 bind(ps, 1, new Object[] {robotId, iteration, simTimeMs, scenario, command});
                 ps.executeUpdate();

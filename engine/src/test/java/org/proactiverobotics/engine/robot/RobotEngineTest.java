@@ -3,9 +3,19 @@ package org.proactiverobotics.engine.robot;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import com.zaxxer.hikari.HikariDataSource;
+import java.sql.Connection;
+import java.sql.ResultSet;
+import java.sql.Statement;
+import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
+import org.proactiverobotics.db.Databases;
+import org.proactiverobotics.db.RecordingDataSource;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
 import org.proactiverobotics.db.Schema;
@@ -51,6 +61,40 @@ class RobotEngineTest {
                     .hasMessageContaining("unknown scenario 'Nope'");
             assertThatThrownBy(() -> ScenarioPlugins.of(new Alpha(), new Alpha())).isInstanceOf(PluginException.class)
                     .hasMessageContaining("'Alpha'");
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void onMariaDbAnIterationsWritesGoWithItsCommitInOneRoundTrip(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             HikariDataSource pool = Databases.multiStatementPool(db.jdbcUrl(), db.user(), db.password())) {
+            Schema.apply(pool);
+            List<String> sent = new CopyOnWriteArrayList<>();
+            RobotEngine engine = RobotEngine.builder().robotId(5).database(RecordingDataSource.of(pool, sent)).build();
+            engine.startFresh();
+            engine.iterate(); // the first finds out what the server takes
+            sent.clear();
+            engine.iterate();
+            List<String> statements = sent.stream().filter(x -> !List.of("commit", "rollback", "setAutoCommit").contains(x)).toList();
+            if (kind == DatabaseKind.MARIADB) {
+                assertThat(statements.size()).as("at most the snapshot, then the writes with COMMIT").isBetween(1, 2);
+                assertThat(statements.get(statements.size() - 1)).contains("engine_state", "engine_queue").endsWith("COMMIT");
+                assertThat(statements.subList(0, statements.size() - 1)).allMatch(x -> x.startsWith("SELECT"));
+            } else {
+                assertThat(statements.size()).as("H2: a statement each").isGreaterThanOrEqualTo(2);
+                assertThat(statements).noneMatch(x -> x.contains("COMMIT"));
+            }
+            try (Connection c = pool.getConnection(); Statement s = c.createStatement();
+                 ResultSet rs = s.executeQuery("SELECT iteration, (SELECT COUNT(*) FROM engine_queue WHERE robot_id = 5)"
+                         + " FROM engine_state WHERE robot_id = 5")) {
+                assertThat(rs.next()).isTrue();
+                assertThat(rs.getLong(1)).as("the second iteration saved").isEqualTo(2);
+                assertThat(rs.getLong(2)).isPositive();
+            }
+            RobotEngine resumed = RobotEngine.builder().robotId(5).database(pool).build();
+            assertThat(resumed.resume()).isTrue();
+            assertThat(resumed.engine().iteration()).isEqualTo(2);
         }
     }
 }

@@ -159,16 +159,7 @@ public final class JdbcRobotLink implements RobotLink {
                         ps.executeUpdate();
                     }
                 }
-                List<DistanceReading> distances = answer.distances();
-                INSERT_DS.write(c, queryTimeoutS, distances.size(), (ps, p, r) -> {
-                    DistanceReading d = distances.get(r);
-                    ps.setInt(p, robotId);
-                    ps.setLong(p + 1, t);
-                    ps.setInt(p + 2, d.sensorIndex());
-                    ps.setDouble(p + 3, d.angleRad());
-                    ps.setDouble(p + 4, d.distanceM());
-                    ps.setDouble(p + 5, d.rangeM());
-                });
+                INSERT_DS.write(c, queryTimeoutS, answer.distances().size(), distanceRows(robotId, answer));
                 if (answer.battery() != null) {
                     try (PreparedStatement ps = prepare(c, INSERT_BATTERY)) {
                         bindBattery(ps, robotId, t, answer.battery());
@@ -217,19 +208,7 @@ public final class JdbcRobotLink implements RobotLink {
                 ps.setDouble(p + 4, answer.iu().yawRad());
             });
         }
-        List<DistanceReading> distances = answer.distances();
-        for (int from = 0; from < distances.size(); from += MultiRow.MAX_ROWS) {
-            int first = from;
-            trip.addRows(INSERT_DS, 6, Math.min(MultiRow.MAX_ROWS, distances.size() - from), (ps, p, r) -> {
-                DistanceReading d = distances.get(first + r);
-                ps.setInt(p, robotId);
-                ps.setLong(p + 1, t);
-                ps.setInt(p + 2, d.sensorIndex());
-                ps.setDouble(p + 3, d.angleRad());
-                ps.setDouble(p + 4, d.distanceM());
-                ps.setDouble(p + 5, d.rangeM());
-            });
-        }
+        trip.addRows(INSERT_DS, 6, answer.distances().size(), distanceRows(robotId, answer));
         if (answer.battery() != null) {
             trip.add(INSERT_BATTERY, 4, (ps, p) -> bindBattery(ps, p, robotId, t, answer.battery()));
         }
@@ -260,6 +239,21 @@ public final class JdbcRobotLink implements RobotLink {
             multiStatements = multi;
         }
         return multi;
+    }
+
+    /** Binds an answer's distance readings, one row each. */
+    private static MultiRow.RowBinder distanceRows(int robotId, SensorAnswer answer) {
+        List<DistanceReading> distances = answer.distances();
+        long t = answer.simTimeMs();
+        return (ps, p, r) -> {
+            DistanceReading d = distances.get(r);
+            ps.setInt(p, robotId);
+            ps.setLong(p + 1, t);
+            ps.setInt(p + 2, d.sensorIndex());
+            ps.setDouble(p + 3, d.angleRad());
+            ps.setDouble(p + 4, d.distanceM());
+            ps.setDouble(p + 5, d.rangeM());
+        };
     }
 
     private void remember(int robotId, SensorAnswer answer) {

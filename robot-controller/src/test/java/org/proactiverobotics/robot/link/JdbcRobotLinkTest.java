@@ -11,6 +11,7 @@ import java.util.List;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
+import org.proactiverobotics.db.RecordingDataSource;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
 
@@ -138,8 +139,8 @@ class JdbcRobotLinkTest {
     void aLinkThatDidNotWriteTheReadingsPrunesTheSameRows(DatabaseKind kind) throws Exception {
         List<String> writerSent = new java.util.concurrent.CopyOnWriteArrayList<>();
         List<String> restartedSent = new java.util.concurrent.CopyOnWriteArrayList<>();
-        try (TestDatabase db = TestDatabases.open(kind); RobotLink writer = new JdbcRobotLink(recording(db.dataSource(), writerSent));
-             RobotLink restarted = new JdbcRobotLink(recording(db.dataSource(), restartedSent))) {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink writer = new JdbcRobotLink(RecordingDataSource.of(db.dataSource(), writerSent));
+             RobotLink restarted = new JdbcRobotLink(RecordingDataSource.of(db.dataSource(), restartedSent))) {
             List<DistanceReading> ds = List.of(new DistanceReading(0, 0, 0.3, 1), new DistanceReading(1, 1, 0.4, 1));
             for (int step = 0; step < 30; step++) {
                 for (int robot = 1; robot <= 2; robot++) {
@@ -189,7 +190,7 @@ class JdbcRobotLinkTest {
         try (TestDatabase db = TestDatabases.open(kind);
              com.zaxxer.hikari.HikariDataSource robotPool = RobotPool.open(db.jdbcUrl(), db.user(), db.password())) {
             List<String> sent = new java.util.concurrent.CopyOnWriteArrayList<>();
-            try (RobotLink link = new JdbcRobotLink(recording(robotPool, sent))) {
+            try (RobotLink link = new JdbcRobotLink(RecordingDataSource.of(robotPool, sent))) {
                 db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', 1), (1, 'DS', 1)");
                 long[] ids = link.pendingRequests(1).stream().mapToLong(SensorRequest::id).toArray();
                 List<DistanceReading> ds = List.of(new DistanceReading(0, -0.5, 0.75, 2), new DistanceReading(1, 0.5, 2, 2));
@@ -227,46 +228,6 @@ class JdbcRobotLinkTest {
             }
             assertThat(one(db, "SELECT COUNT(*), MAX(x_m) FROM gps_stored_values")).containsExactly(2L, 2.0);
             assertThat(link.pendingRequests(1)).isEmpty();
-        }
-    }
-
-    /** The data source, recording what goes to the server: each statement's SQL as it is run, and commit, rollback or an auto-commit switch by name. */
-    private static javax.sql.DataSource recording(javax.sql.DataSource target, List<String> sent) {
-        return (javax.sql.DataSource) java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
-                new Class<?>[] {javax.sql.DataSource.class}, (proxy, method, args) -> {
-                    Object result = invoke(method, target, args);
-                    if (!method.getName().equals("getConnection")) {
-                        return result;
-                    }
-                    Connection c = (Connection) result;
-                    return java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
-                            new Class<?>[] {Connection.class}, (cp, cm, cargs) -> {
-                                if (List.of("commit", "rollback", "setAutoCommit").contains(cm.getName())) {
-                                    sent.add(cm.getName());
-                                }
-                                Object r = invoke(cm, c, cargs);
-                                if (r instanceof java.sql.Statement s) {
-                                    String prepared = cm.getName().equals("prepareStatement") ? (String) cargs[0] : null;
-                                    Class<?> type = r instanceof PreparedStatement ? PreparedStatement.class : java.sql.Statement.class;
-                                    return java.lang.reflect.Proxy.newProxyInstance(JdbcRobotLinkTest.class.getClassLoader(),
-                                            new Class<?>[] {type}, (sp, sm, sargs) -> {
-                                                if (sm.getName().startsWith("execute")) {
-                                                    sent.add(prepared != null ? prepared : sargs != null && sargs.length > 0
-                                                            ? String.valueOf(sargs[0]) : sm.getName());
-                                                }
-                                                return invoke(sm, s, sargs);
-                                            });
-                                }
-                                return r;
-                            });
-                });
-    }
-
-    private static Object invoke(java.lang.reflect.Method m, Object target, Object[] args) throws Throwable {
-        try {
-            return m.invoke(target, args);
-        } catch (java.lang.reflect.InvocationTargetException e) {
-            throw e.getCause();
         }
     }
 
