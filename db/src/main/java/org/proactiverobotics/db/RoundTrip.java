@@ -16,18 +16,7 @@ import java.util.Locale;
  * control. When a statement fails the server runs none after it, and this sends {@code ROLLBACK}.
  * Not for H2, where a statement costs no round trip.
  */
-public final class RoundTrip {
-
-    /** Binds one statement's values. */
-    @FunctionalInterface
-    public interface Binder {
-        /**
-         * @param ps    the whole round trip's statement
-         * @param first the parameter index of this statement's first value
-         * @throws SQLException from the driver
-         */
-        void bind(PreparedStatement ps, int first) throws SQLException;
-    }
+public final class RoundTrip implements Writes {
 
     /** MariaDB's and MySQL's syntax error: what a server says to multi-statements it does not allow. */
     private static final int ER_PARSE_ERROR = 1064;
@@ -86,43 +75,28 @@ public final class RoundTrip {
         }
     }
 
-    /**
-     * Adds a statement.
-     *
-     * @param statement  one SQL statement, without a semicolon
-     * @param parameters how many '?' it has
-     * @param binder     binds them from the index it is given
-     * @return this
-     */
-    public RoundTrip add(String statement, int parameters, Binder binder) {
+    /** Keeps a statement for the round trip. */
+    @Override
+    public void add(String statement, int parameters, Binder binder) {
         texts.add(statement);
         firsts.add(this.parameters + 1);
         binders.add(binder);
         this.parameters += parameters;
         statements++;
-        return this;
     }
 
-    /**
-     * Adds rows as multi-row statements of {@code insert}'s words, as few as {@link MultiRow#MAX_ROWS} allows.
-     *
-     * @param insert  the statement's words
-     * @param columns how many values a row has
-     * @param rows    how many rows (none: nothing is added)
-     * @param binder  binds row r's values from the given parameter index
-     * @return this
-     */
-    public RoundTrip addRows(MultiRow insert, int columns, int rows, MultiRow.RowBinder binder) {
+    /** Keeps rows for the round trip, in MariaDB's and MySQL's words. */
+    @Override
+    public void addRows(MultiRow words, int columns, int rows, MultiRow.RowBinder binder) {
         for (int from = 0; from < rows; from += MultiRow.MAX_ROWS) {
             int first = from;
             int n = Math.min(MultiRow.MAX_ROWS, rows - from);
-            add(insert.sql(false, n), n * columns, (ps, p) -> {
+            add(words.sql(false, n), n * columns, (ps, p) -> {
                 for (int r = 0; r < n; r++) {
                     binder.bind(ps, p + r * columns, first + r);
                 }
             });
         }
-        return this;
     }
 
     /** @return how many statements were added (the transaction's control not counted) */

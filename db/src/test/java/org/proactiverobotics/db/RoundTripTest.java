@@ -17,19 +17,20 @@ class RoundTripTest {
 
     private static RoundTrip twoInserts(int robotId, String secondTable) {
         MultiRow rows = MultiRow.insert("battery_level", "robot_id", "sim_time_ms", "level_pct", "charging");
-        return new RoundTrip()
-                .addRows(rows, 4, 2, (ps, p, r) -> {
-                    ps.setInt(p, robotId);
-                    ps.setLong(p + 1, 32L * r);
-                    ps.setDouble(p + 2, 90 - r);
-                    ps.setBoolean(p + 3, false);
-                })
-                .add("INSERT INTO " + secondTable + " (robot_id, sim_time_ms, x_m, y_m) VALUES (?, ?, ?, ?)", 4, (ps, p) -> {
-                    ps.setInt(p, robotId);
-                    ps.setLong(p + 1, 64);
-                    ps.setDouble(p + 2, 1.25);
-                    ps.setDouble(p + 3, -2.5e-7);
-                });
+        RoundTrip trip = new RoundTrip();
+        trip.addRows(rows, 4, 2, (ps, p, r) -> {
+            ps.setInt(p, robotId);
+            ps.setLong(p + 1, 32L * r);
+            ps.setDouble(p + 2, 90 - r);
+            ps.setBoolean(p + 3, false);
+        });
+        trip.add("INSERT INTO " + secondTable + " (robot_id, sim_time_ms, x_m, y_m) VALUES (?, ?, ?, ?)", 4, (ps, p) -> {
+            ps.setInt(p, robotId);
+            ps.setLong(p + 1, 64);
+            ps.setDouble(p + 2, 1.25);
+            ps.setDouble(p + 3, -2.5e-7);
+        });
+        return trip;
     }
 
     private static int inTransaction(Connection c) throws SQLException {

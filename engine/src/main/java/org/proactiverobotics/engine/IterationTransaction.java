@@ -9,6 +9,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.logging.Logger;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.RoundTrip;
+import org.proactiverobotics.db.Writes;
 
 /**
  * One database transaction per engine iteration, on one explicit connection: between
@@ -35,8 +36,10 @@ public final class IterationTransaction implements DataSource {
     private Connection shared;
     /** Whether the pool's connections take multi-statements (MariaDB, MySQL); null until the first iteration. */
     private Boolean multiStatements;
-    /** The open iteration's writes that are sent with its commit, or null (run at once instead). */
+    /** The open iteration's writes that are sent with its commit, or null (they run at once instead). */
     private RoundTrip deferred;
+    /** Where the open iteration's writes go: {@link #deferred}, or its connection at once. */
+    private Writes writes;
     private Thread owner;
     private boolean rollbackOnly;
     private long number;
@@ -89,6 +92,7 @@ public final class IterationTransaction implements DataSource {
         }
         shared = c;
         deferred = multiStatements ? RoundTrip.endingTransaction() : null;
+        writes = deferred != null ? deferred : Writes.atOnce(c);
         owner = Thread.currentThread();
         rollbackOnly = false;
         number++;
@@ -106,12 +110,12 @@ public final class IterationTransaction implements DataSource {
     /**
      * Where the open iteration's writes that nobody reads back go: on MariaDB and MySQL they are
      * sent with the commit, as one round trip; elsewhere (H2, where a statement costs no round
-     * trip) there is none and they run at once on {@link #connection()}.
+     * trip) they run at once on {@link #connection()}.
      *
-     * @return the iteration's deferred writes when called on its thread over such a database, else null
+     * @return the iteration's writes when called on its thread, else null
      */
-    public RoundTrip deferred() {
-        return connection() != null ? deferred : null;
+    public Writes writes() {
+        return connection() != null ? writes : null;
     }
 
     /** @return a number that changes with every {@link #begin()}: what a per-iteration cache is keyed by */
@@ -174,6 +178,7 @@ public final class IterationTransaction implements DataSource {
         Connection c = shared;
         shared = null;
         deferred = null;
+        writes = null;
         owner = null;
         if (c == null) {
             return;

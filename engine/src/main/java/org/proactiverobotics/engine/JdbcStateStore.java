@@ -13,7 +13,7 @@ import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
-import org.proactiverobotics.db.RoundTrip;
+import org.proactiverobotics.db.Writes;
 
 /**
  * Saves the engine state through JDBC in the tables {@code engine_state}, {@code engine_queue}
@@ -34,6 +34,12 @@ public final class JdbcStateStore implements StateStore {
     private final StateCodec codec;
     /** Per robot, "type NUL json" of each queue row as last committed; absent = unknown, read the table. */
     private final Map<Integer, List<String>> savedRows = new ConcurrentHashMap<>();
+    /** The state row, inserted or replaced, in MySQL's and MariaDB's words ... */
+    private static final String SAVE_STATE = "INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (?, ?, ?)"
+            + " ON DUPLICATE KEY UPDATE iteration = VALUES(iteration), memory_json = VALUES(memory_json), saved_at = CURRENT_TIMESTAMP(3)";
+    /** ... and in H2's (which runs the former as a failed insert and an update). */
+    private static final String SAVE_STATE_H2 = "MERGE INTO engine_state (robot_id, iteration, memory_json, saved_at) KEY (robot_id)"
+            + " VALUES (?, ?, ?, CURRENT_TIMESTAMP(3))";
     private static final MultiRow UPSERT_QUEUE = MultiRow.upsert("engine_queue", List.of("robot_id", "position"),
             "robot_id", "position", "rule_type", "rule_json");
 
@@ -157,7 +163,8 @@ public final class JdbcStateStore implements StateStore {
         Connection inIteration = transaction == null ? null : transaction.connection();
         if (inIteration != null) {
             try {
-                savedRows.put(robotId, save(inIteration, robotId, iteration, nextQueue, memory, failures, previous));
+                savedRows.put(robotId, save(transaction.writes(), inIteration, robotId, iteration, nextQueue, memory, failures,
+                        previous));
                 return; // committed with the iteration (a rollback of it clears savedRows)
             } catch (SQLException | RuntimeException e) {
                 transaction.markRollbackOnly();
@@ -172,7 +179,7 @@ public final class JdbcStateStore implements StateStore {
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
             try {
-                List<String> rows = save(c, robotId, iteration, nextQueue, memory, failures, previous);
+                List<String> rows = save(Writes.atOnce(c), c, robotId, iteration, nextQueue, memory, failures, previous);
                 c.commit();
                 savedRows.put(robotId, rows);
             } catch (SQLException | RuntimeException e) {
@@ -185,89 +192,31 @@ public final class JdbcStateStore implements StateStore {
         }
     }
 
-    private List<String> save(Connection c, int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory,
-                              List<RuleFailure> failures, List<String> previous) throws SQLException {
-        RoundTrip trip = transaction == null ? null : transaction.deferred();
-        if (trip != null) {
-            return save(trip, c, robotId, iteration, nextQueue, memory, failures, previous);
-        }
-        String memoryJson = codec.memoryJson(memory);
-        try (PreparedStatement ps = c.prepareStatement(
-                "UPDATE engine_state SET iteration = ?, memory_json = ?, saved_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ?")) {
-            ps.setLong(1, iteration);
-            ps.setString(2, memoryJson);
-            ps.setInt(3, robotId);
-            if (ps.executeUpdate() == 0) {
-                try (PreparedStatement insert = c.prepareStatement(
-                        "INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (?, ?, ?)")) {
-                    insert.setInt(1, robotId);
-                    insert.setLong(2, iteration);
-                    insert.setString(3, memoryJson);
-                    insert.executeUpdate();
-                }
-            }
-        }
-        // Only the rows that differ from the saved ones are written, as one upsert (one statement on H2 and
-        // MariaDB alike, where a batch was a statement per row); only a shrink deletes.
-        long saved = previous != null ? previous.size() : countQueueRows(c, robotId);
-        QueueDiff diff = diff(nextQueue, previous, saved);
-        List<String> rows = diff.rows();
-        List<QueueRow> changed = diff.changed();
-        int position = rows.size();
-        UPSERT_QUEUE.write(c, changed.size(), queueRows(robotId, changed));
-        if (saved > position) {
-            try (PreparedStatement ps = c.prepareStatement("DELETE FROM engine_queue WHERE robot_id = ? AND position >= ?")) {
-                ps.setInt(1, robotId);
-                ps.setInt(2, position);
-                ps.executeUpdate();
-            }
-        }
-        if (!failures.isEmpty()) {
-            try (PreparedStatement ps = c.prepareStatement("INSERT INTO rule_failures"
-                    + " (robot_id, iteration, rule, scenario, part, message) VALUES (?, ?, ?, ?, ?, ?)")) {
-                for (RuleFailure f : failures) {
-                    ps.setInt(1, robotId);
-                    ps.setLong(2, f.iteration());
-                    ps.setString(3, cut(f.rule(), 255));
-                    ps.setString(4, cut(f.scenario(), 64));
-                    ps.setString(5, f.part().name());
-                    ps.setString(6, cut(f.message(), 1000));
-                    ps.addBatch();
-                }
-                ps.executeBatch();
-            }
-        }
-        return rows;
-    }
-
     /**
-     * The same save as statements sent with the iteration's commit (MariaDB, MySQL): the state row
-     * as an upsert, so that no row count is needed before the commit.
+     * The state row (an upsert: no row count is needed, so the writes may go with the iteration's
+     * commit), then only the queue rows that differ from the saved ones, as one upsert; only a
+     * shrink deletes.
      */
-    private List<String> save(RoundTrip trip, Connection c, int robotId, long iteration, Collection<Rule> nextQueue,
+    private List<String> save(Writes writes, Connection c, int robotId, long iteration, Collection<Rule> nextQueue,
                               SharedMemory memory, List<RuleFailure> failures, List<String> previous) throws SQLException {
         String memoryJson = codec.memoryJson(memory);
-        trip.add("INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (?, ?, ?) ON DUPLICATE KEY UPDATE"
-                + " iteration = VALUES(iteration), memory_json = VALUES(memory_json), saved_at = CURRENT_TIMESTAMP(3)", 3, (ps, p) -> {
-                    ps.setInt(p, robotId);
-                    ps.setLong(p + 1, iteration);
-                    ps.setString(p + 2, memoryJson);
-                });
+        writes.add(MultiRow.isH2(c) ? SAVE_STATE_H2 : SAVE_STATE, 3, (ps, p) -> {
+            ps.setInt(p, robotId);
+            ps.setLong(p + 1, iteration);
+            ps.setString(p + 2, memoryJson);
+        });
         long saved = previous != null ? previous.size() : countQueueRows(c, robotId);
         QueueDiff diff = diff(nextQueue, previous, saved);
-        List<String> rows = diff.rows();
-        List<QueueRow> changed = diff.changed();
-        int position = rows.size();
-        trip.addRows(UPSERT_QUEUE, 4, changed.size(), queueRows(robotId, changed));
-        if (saved > position) {
-            int size = position;
-            trip.add("DELETE FROM engine_queue WHERE robot_id = ? AND position >= ?", 2, (ps, p) -> {
+        writes.addRows(UPSERT_QUEUE, 4, diff.changed().size(), queueRows(robotId, diff.changed()));
+        int size = diff.rows().size();
+        if (saved > size) {
+            writes.add("DELETE FROM engine_queue WHERE robot_id = ? AND position >= ?", 2, (ps, p) -> {
                 ps.setInt(p, robotId);
                 ps.setInt(p + 1, size);
             });
         }
         for (RuleFailure f : List.copyOf(failures)) {
-            trip.add("INSERT INTO rule_failures (robot_id, iteration, rule, scenario, part, message) VALUES (?, ?, ?, ?, ?, ?)",
+            writes.add("INSERT INTO rule_failures (robot_id, iteration, rule, scenario, part, message) VALUES (?, ?, ?, ?, ?, ?)",
                     6, (ps, p) -> {
                         ps.setInt(p, robotId);
                         ps.setLong(p + 1, f.iteration());
@@ -277,7 +226,7 @@ public final class JdbcStateStore implements StateStore {
                         ps.setString(p + 5, cut(f.message(), 1000));
                     });
         }
-        return rows;
+        return diff.rows();
     }
 
     /** Binds queue rows, one row each. */

@@ -11,7 +11,7 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
-import org.proactiverobotics.db.RoundTrip;
+import org.proactiverobotics.db.Writes;
 import org.proactiverobotics.engine.IterationTransaction;
 
 /**
@@ -87,52 +87,31 @@ public final class JdbcRobotTables
         return transaction != null && transaction.connection() != null;
     }
 
-    /** The iteration's writes, one batch per statement, just before its commit (with it, where writes are deferred). */
+    /** The iteration's requests and marks just before its commit (with it, where writes are deferred). */
     private void flush(Connection c) throws SQLException {
         try {
-            RoundTrip trip = transaction.deferred();
-            if (trip == null) {
-                insertRequests(c, pendingRequests);
-                batch(c, MARK_REACHED, pendingMarks);
-                return;
-            }
-            List<Object[]> requests = pendingRequests;
-            trip.addRows(INSERT_REQUESTS, 3, requests.size(), (ps, p, r) -> bind(ps, p, requests.get(r)));
-            for (Object[] mark : pendingMarks) {
-                trip.add(MARK_REACHED, 3, (ps, p) -> bind(ps, p, mark));
-            }
+            writePending(transaction.writes());
         } finally {
             forgetIteration();
         }
     }
 
-    private void forgetIteration() {
-        pendingRequests = new ArrayList<>(); // a deferred write may still bind the old lists
+    /** The requests and marks kept so far: the requests in one statement, a statement per mark. */
+    private void writePending(Writes writes) throws SQLException {
+        List<Object[]> requests = pendingRequests;
+        List<Object[]> marks = pendingMarks;
+        pendingRequests = new ArrayList<>(); // a deferred write still binds these
         pendingMarks = new ArrayList<>();
+        writes.addRows(INSERT_REQUESTS, 3, requests.size(), (ps, p, r) -> bind(ps, p, requests.get(r)));
+        for (Object[] mark : marks) {
+            writes.add(MARK_REACHED, 3, (ps, p) -> bind(ps, p, mark));
+        }
+    }
+
+    private void forgetIteration() {
+        pendingRequests.clear();
+        pendingMarks.clear();
         snapshot = null;
-    }
-
-    /** The iteration's requests, in one statement. */
-    private static void insertRequests(Connection c, List<Object[]> rows) throws SQLException {
-        INSERT_REQUESTS.write(c, rows.size(), (ps, p, r) -> bind(ps, p, rows.get(r)));
-    }
-
-    private static void batch(Connection c, String sql, List<Object[]> rows) throws SQLException {
-        if (rows.isEmpty()) {
-            return;
-        }
-        try (PreparedStatement ps = c.prepareStatement(sql)) {
-            if (rows.size() == 1) {
-                bind(ps, 1, rows.get(0));
-                ps.executeUpdate();
-                return;
-            }
-            for (Object[] row : rows) {
-                bind(ps, 1, row);
-                ps.addBatch();
-            }
-            ps.executeBatch();
-        }
     }
 
     /** @return the robot whose rows these are */
@@ -333,13 +312,13 @@ public final class JdbcRobotTables
             return;
         }
         // on the running iteration's connection: the map commits with the iteration that drew it, or not at all
-        Connection inIteration = transaction == null ? null : transaction.connection();
+        Writes inIteration = transaction == null ? null : transaction.writes();
         try {
             if (inIteration != null) {
                 writeChunks(inIteration, chunks, simTimeMs);
             } else {
                 try (Connection c = dataSource.getConnection()) {
-                    writeChunks(c, chunks, simTimeMs);
+                    writeChunks(Writes.atOnce(c), chunks, simTimeMs);
                 }
             }
         } catch (SQLException e) {
@@ -347,17 +326,12 @@ public final class JdbcRobotTables
         }
     }
 
-    private void writeChunks(Connection c, List<MapChunk> chunks, long simTimeMs) throws SQLException {
-        RoundTrip trip = transaction == null ? null : transaction.deferred();
-        if (trip == null) {
-            UPSERT_CHUNKS.write(c, chunks.size(), chunkRows(chunks, simTimeMs));
-            return;
-        }
-        List<MapChunk> copies = new ArrayList<>(chunks.size()); // bound at the commit: the cells as they are now
+    private void writeChunks(Writes writes, List<MapChunk> chunks, long simTimeMs) throws SQLException {
+        List<MapChunk> copies = new ArrayList<>(chunks.size()); // a deferred write binds at the commit: the cells as they are now
         for (MapChunk chunk : chunks) {
             copies.add(new MapChunk(chunk.chunkX(), chunk.chunkY(), chunk.cells().clone()));
         }
-        trip.addRows(UPSERT_CHUNKS, 5, copies.size(), chunkRows(copies, simTimeMs));
+        writes.addRows(UPSERT_CHUNKS, 5, copies.size(), chunkRows(copies, simTimeMs));
     }
 
     /** Binds chunks, one row each. */
@@ -410,10 +384,7 @@ public final class JdbcRobotTables
         Connection inIteration = transaction == null ? null : transaction.connection();
         if (inIteration != null) {
             try {
-                insertRequests(inIteration, pendingRequests); // the iteration's writes so far go first
-                batch(inIteration, MARK_REACHED, pendingMarks);
-                pendingRequests.clear();
-                pendingMarks.clear();
+                writePending(Writes.atOnce(inIteration)); // the iteration's writes so far go first
                 writeStrategy(inIteration, entries);
                 snapshot = null; // read again, with the new strategy, by the next read
             } catch (SQLException e) {

@@ -14,6 +14,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
 import org.proactiverobotics.db.RoundTrip;
+import org.proactiverobotics.db.Writes;
 
 /**
  * {@link RobotLink} over JDBC and the tables of {@code schema.sql}; the same SQL runs on H2
@@ -133,66 +134,31 @@ public final class JdbcRobotLink implements RobotLink {
     public void answer(int robotId, SensorAnswer answer) throws LinkException {
         withConnection("writing " + answer.readingCount() + " reading(s)", c -> {
             if (oneRoundTrip(c)) {
-                answerInOneRoundTrip(c, robotId, answer);
-                remember(robotId, answer);
-                return null;
+                RoundTrip trip = new RoundTrip();
+                write(trip, robotId, answer);
+                if (trip.statements() > 0) {
+                    trip.commit(c);
+                }
+            } else {
+                c.setAutoCommit(false);
+                try {
+                    write(Writes.atOnce(c, queryTimeoutS), robotId, answer);
+                    c.commit();
+                } catch (SQLException | RuntimeException e) {
+                    rollbackQuietly(c, e);
+                    throw e;
+                }
             }
-            c.setAutoCommit(false);
-            try {
-                long t = answer.simTimeMs();
-                if (answer.gps() != null) {
-                    try (PreparedStatement ps = prepare(c, INSERT_GPS)) {
-                        ps.setInt(1, robotId);
-                        ps.setLong(2, t);
-                        ps.setDouble(3, answer.gps().xM());
-                        ps.setDouble(4, answer.gps().yM());
-                        ps.executeUpdate();
-                    }
-                }
-                if (answer.iu() != null) {
-                    try (PreparedStatement ps = prepare(c, INSERT_IU)) {
-                        ps.setInt(1, robotId);
-                        ps.setLong(2, t);
-                        ps.setDouble(3, answer.iu().rollRad());
-                        ps.setDouble(4, answer.iu().pitchRad());
-                        ps.setDouble(5, answer.iu().yawRad());
-                        ps.executeUpdate();
-                    }
-                }
-                INSERT_DS.write(c, queryTimeoutS, answer.distances().size(), distanceRows(robotId, answer));
-                if (answer.battery() != null) {
-                    try (PreparedStatement ps = prepare(c, INSERT_BATTERY)) {
-                        bindBattery(ps, robotId, t, answer.battery());
-                        ps.executeUpdate();
-                    }
-                }
-                long[] ids = answer.requestIds();
-                if (ids.length > 0) {
-                    try (PreparedStatement ps = prepare(c, markAnswered(ids.length))) {
-                        ps.setLong(1, t);
-                        ps.setInt(2, robotId);
-                        for (int k = 0; k < ids.length; k++) {
-                            ps.setLong(3 + k, ids[k]);
-                        }
-                        ps.executeUpdate();
-                    }
-                }
-                c.commit();
-                remember(robotId, answer);
-                return null;
-            } catch (SQLException | RuntimeException e) {
-                rollbackQuietly(c, e);
-                throw e;
-            }
+            remember(robotId, answer);
+            return null;
         });
     }
 
-    /** The answer as one transaction in one round trip (MariaDB, MySQL). */
-    private void answerInOneRoundTrip(Connection c, int robotId, SensorAnswer answer) throws SQLException {
+    /** An answer's readings and the marks of the requests it answers. */
+    private static void write(Writes writes, int robotId, SensorAnswer answer) throws SQLException {
         long t = answer.simTimeMs();
-        RoundTrip trip = new RoundTrip();
         if (answer.gps() != null) {
-            trip.add(INSERT_GPS, 4, (ps, p) -> {
+            writes.add(INSERT_GPS, 4, (ps, p) -> {
                 ps.setInt(p, robotId);
                 ps.setLong(p + 1, t);
                 ps.setDouble(p + 2, answer.gps().xM());
@@ -200,7 +166,7 @@ public final class JdbcRobotLink implements RobotLink {
             });
         }
         if (answer.iu() != null) {
-            trip.add(INSERT_IU, 5, (ps, p) -> {
+            writes.add(INSERT_IU, 5, (ps, p) -> {
                 ps.setInt(p, robotId);
                 ps.setLong(p + 1, t);
                 ps.setDouble(p + 2, answer.iu().rollRad());
@@ -208,22 +174,19 @@ public final class JdbcRobotLink implements RobotLink {
                 ps.setDouble(p + 4, answer.iu().yawRad());
             });
         }
-        trip.addRows(INSERT_DS, 6, answer.distances().size(), distanceRows(robotId, answer));
+        writes.addRows(INSERT_DS, 6, answer.distances().size(), distanceRows(robotId, answer));
         if (answer.battery() != null) {
-            trip.add(INSERT_BATTERY, 4, (ps, p) -> bindBattery(ps, p, robotId, t, answer.battery()));
+            writes.add(INSERT_BATTERY, 4, (ps, p) -> bindBattery(ps, p, robotId, t, answer.battery()));
         }
         long[] ids = answer.requestIds();
         if (ids.length > 0) {
-            trip.add(markAnswered(ids.length), 2 + ids.length, (ps, p) -> {
+            writes.add(markAnswered(ids.length), 2 + ids.length, (ps, p) -> {
                 ps.setLong(p, t);
                 ps.setInt(p + 1, robotId);
                 for (int k = 0; k < ids.length; k++) {
                     ps.setLong(p + 2 + k, ids[k]);
                 }
             });
-        }
-        if (trip.statements() > 0) {
-            trip.commit(c);
         }
     }
 
