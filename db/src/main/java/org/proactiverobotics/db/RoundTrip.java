@@ -110,18 +110,25 @@ public final class RoundTrip implements Writes {
      *
      * @param c the connection; when this throws, give it back to a pool that discards broken
      *          connections (Hikari does): after an I/O error its state is not known
+     * @return each added statement's update count, in the order added (-1 for a query)
      * @throws SQLException when a statement or the commit failed: none of them stays, but after an
      *         I/O error (a socket time-out, a dropped connection) whether the server committed is
      *         not known
      */
-    public void commit(Connection c) throws SQLException {
+    public int[] commit(Connection c) throws SQLException {
         String text = (opens ? "START TRANSACTION;\n" : "") + String.join(";\n", texts) + ";\nCOMMIT";
+        int[] counts = new int[statements];
         try (PreparedStatement ps = c.prepareStatement(text)) {
             for (int i = 0; i < binders.size(); i++) {
                 binders.get(i).bind(ps, firsts.get(i));
             }
             boolean resultSet = ps.execute();
+            int result = opens ? -1 : 0; // START TRANSACTION's result is not a statement's
             while (resultSet || ps.getUpdateCount() != -1) { // every statement's result, so that an error is seen
+                if (result >= 0 && result < statements) {
+                    counts[result] = resultSet ? -1 : ps.getUpdateCount();
+                }
+                result++;
                 resultSet = ps.getMoreResults();
             }
         } catch (SQLException e) {
@@ -133,5 +140,6 @@ public final class RoundTrip implements Writes {
             }
             throw e;
         }
+        return counts;
     }
 }

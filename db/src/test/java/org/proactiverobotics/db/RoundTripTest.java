@@ -69,7 +69,7 @@ class RoundTripTest {
             assertThat(RoundTrip.allowed(c)).isTrue();
             RoundTrip trip = twoInserts(3, "gps_stored_values");
             assertThat(trip.statements()).isEqualTo(2);
-            trip.commit(c);
+            assertThat(trip.commit(c)).as("each statement's update count").containsExactly(2, 1);
             assertThat(db.count("battery_level")).isEqualTo(2);
             assertThat(db.count("gps_stored_values")).isEqualTo(1);
             try (Statement s = c.createStatement(); ResultSet rs = s.executeQuery("SELECT x_m, y_m FROM gps_stored_values")) {
@@ -84,6 +84,11 @@ class RoundTripTest {
             assertThat(inTransaction(c)).as("and the transaction ended").isZero();
             twoInserts(5, "gps_stored_values").commit(c);
             assertThat(db.count("battery_level")).as("the connection goes on").isEqualTo(4);
+
+            RoundTrip update = new RoundTrip();
+            update.add("UPDATE battery_level SET charging = TRUE WHERE robot_id = ?", 1, (ps, p) -> ps.setInt(p, 5));
+            update.add("UPDATE battery_level SET charging = TRUE WHERE robot_id = ?", 1, (ps, p) -> ps.setInt(p, 99));
+            assertThat(update.commit(c)).as("rows matched, none for a robot with no rows").containsExactly(2, 0);
         }
     }
 

@@ -7,6 +7,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 import org.proactiverobotics.db.Backoff;
+import org.proactiverobotics.db.PollPacing;
 import org.proactiverobotics.robot.link.LinkException;
 import org.proactiverobotics.robot.link.RobotClock;
 import org.proactiverobotics.robot.link.RobotClock.EngineTick;
@@ -51,6 +52,8 @@ public final class Lockstep implements StepGate {
     private final Timing timing;
     private final BooleanSupplier stopRequested;
     private final Backoff backoff = new Backoff(100, 5_000, System::nanoTime);
+    /** Polls for the engine's iteration about when it is due, learnt from the last steps. */
+    private final PollPacing pacing = new PollPacing();
     private long runId = -1;
     private EngineTick lastTick;
     private long lastStep;
@@ -136,19 +139,27 @@ public final class Lockstep implements StepGate {
         return Optional.ofNullable(lastTick).filter(t -> t.runId() == runId);
     }
 
-    /** Polls engine_clock until the engine serves this run up to the step; false when stopped. */
+    /**
+     * Polls engine_clock until the engine serves this run up to the step, first about when the
+     * iteration is due ({@link PollPacing}), then closely; false when stopped.
+     */
     private boolean awaitEngine(long step, String what) {
         long start = System.nanoTime();
         long nextStatus = start + FIRST_STATUS_NANOS;
         boolean reported = false;
         int polls = 0;
+        LockSupport.parkNanos(pacing.pauseNanos(0, 0)); // the engine's iteration has only just been asked for
         while (true) {
+            polls++;
             Optional<EngineTick> tick = retry("reading engine_clock", () -> clock.engineTick(robotId));
             if (tick == null) {
                 return false;
             }
             if (tick.isPresent() && tick.get().runId() == runId && tick.get().step() >= step) {
                 lastTick = tick.get();
+                if (step > 0) {
+                    pacing.waited(System.nanoTime() - start);
+                }
                 if (reported || step == 0) {
                     LOG.info("robot {}: the engine {} (after {} s)", robotId, step == 0 ? "acknowledged run " + runId
                             : "is back, serving step " + step, String.format(Locale.ROOT, "%.1f", (System.nanoTime() - start) / 1e9));
@@ -167,26 +178,8 @@ public final class Lockstep implements StepGate {
                                 : "it last served run " + t.runId()).orElse("no engine has served this robot yet"),
                         String.format(Locale.ROOT, "%.0f", (now - start) / 1e9));
             }
-            pause(now - start, polls++);
+            LockSupport.parkNanos(pacing.pauseNanos(now - start, polls));
         }
-    }
-
-    /**
-     * Back-to-back polls while the engine is quick (an iteration is a few round trips): a step
-     * then costs round trips, not sleeps; longer pauses once it is away.
-     */
-    private static void pause(long waitedNanos, int polls) {
-        long nanos;
-        if (waitedNanos < TimeUnit.MILLISECONDS.toNanos(50)) {
-            nanos = 20_000;
-        } else if (waitedNanos < TimeUnit.SECONDS.toNanos(1)) {
-            nanos = 1_000_000;
-        } else if (waitedNanos < TimeUnit.SECONDS.toNanos(10)) {
-            nanos = 10_000_000;
-        } else {
-            nanos = 50_000_000;
-        }
-        LockSupport.parkNanos(nanos);
     }
 
     /** Calls until it succeeds, backing off after failures; null when a stop was requested. */

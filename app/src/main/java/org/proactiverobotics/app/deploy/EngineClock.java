@@ -8,6 +8,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.Optional;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.Writes;
 
 /**
  * The engine's side of the lockstep handshake (schema.sql: {@code robot_clock}, read;
@@ -153,6 +154,27 @@ public final class EngineClock {
                 c.setAutoCommit(true);
             }
         }
+    }
+
+    /**
+     * Publishes that the engine has served this run up to this step, in the transaction of the
+     * iteration that served it (which has confirmed the robot's lease): the robot sees the step
+     * served exactly when the iteration's rows are there, and a server that flushes its log at
+     * every commit flushes once for both.
+     *
+     * @param writes    the iteration's writes
+     * @param runId     the run
+     * @param step      the robot step served
+     * @param iteration the iteration that served it
+     */
+    public void publish(Writes writes, long runId, long step, long iteration) throws SQLException {
+        writes.add("UPDATE engine_clock SET run_id = ?, step = ?, iteration = ?, updated_at = CURRENT_TIMESTAMP(3)"
+                + " WHERE robot_id = ?", 4, (ps, p) -> {
+                    ps.setLong(p, runId);
+                    ps.setLong(p + 1, step);
+                    ps.setLong(p + 2, iteration);
+                    ps.setInt(p + 3, robotId);
+                });
     }
 
     /**

@@ -12,6 +12,7 @@ import java.util.function.BooleanSupplier;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.deploy.EngineClock.RobotTick;
 import org.proactiverobotics.db.Backoff;
+import org.proactiverobotics.db.PollPacing;
 import org.proactiverobotics.engine.CorruptStateException;
 import org.proactiverobotics.engine.robot.Strategy;
 import org.slf4j.Logger;
@@ -21,8 +22,8 @@ import org.slf4j.LoggerFactory;
  * The engine process's loop: turns the {@link RobotServer} of every robot it may serve until
  * stopped, on a few threads, each thread owning a fixed share of the robots (robot k of the list
  * on thread k mod threads). A thread reads the clocks of all its robots in one query per pass,
- * turns each, and polls again at once while any robot is stepping (a step costs round trips, not
- * sleeps), more slowly when none is.
+ * turns each, and polls again about when the next step is due ({@link PollPacing}: a step costs
+ * a few round trips, not sleeps), more slowly when no robot is stepping.
  */
 public final class EngineLoop {
 
@@ -102,7 +103,9 @@ public final class EngineLoop {
     private void turnAll(List<RobotServer> share, BooleanSupplier done, Heartbeat beat,
                          AtomicReference<RuntimeException> fatal) {
         int[] ids = share.stream().mapToInt(RobotServer::robotId).toArray();
-        long idlePolls = 0;
+        int idlePolls = 0;
+        long idleSince = System.nanoTime();
+        PollPacing pacing = new PollPacing(); // the robots' next steps come about as far apart as the last ones
         long nextWaitingNanos = System.nanoTime();
         Backoff backoff = new Backoff(100, 5_000, System::nanoTime);
         long failures = 0;
@@ -152,12 +155,14 @@ public final class EngineLoop {
                 return;
             }
             if (worked) {
+                pacing.waited(now - idleSince);
                 idlePolls = 0;
+                idleSince = System.nanoTime();
+                LockSupport.parkNanos(pacing.pauseNanos(0, 0)); // every robot ready was just served
             } else if (wait != Long.MAX_VALUE) { // real time: the next iteration is due at a known time
                 LockSupport.parkNanos(Math.min(wait, 1_000_000));
             } else {
-                long polls = ++idlePolls;
-                LockSupport.parkNanos(polls < 2_000 ? 20_000 : polls < 3_000 ? 1_000_000 : polls < 4_000 ? 10_000_000 : 50_000_000);
+                LockSupport.parkNanos(pacing.pauseNanos(System.nanoTime() - idleSince, ++idlePolls));
             }
         }
     }

@@ -24,7 +24,7 @@ import org.slf4j.LoggerFactory;
  *       fresh; the run the engine already served (the engine restarted, or another engine
  *       served it before) resumes from the saved state. An iteration saved but not yet
  *       published counts as served, so a kill between the two never runs a step twice.</li>
- *   <li>Sync timing: exactly one iteration per robot step, then "served step k".</li>
+ *   <li>Sync timing: exactly one iteration per robot step; "served step k" commits with it.</li>
  *   <li>Real-time timing: one iteration every period, at a fixed rate, while the run goes on.</li>
  *   <li>A database failure (or an iteration failing to save) is logged once and retried with
  *       back-off; the engine resumes from its saved state when the database is back.</li>
@@ -227,11 +227,13 @@ public final class RobotServer {
             nextTickNanos = now - nextTickNanos > 10 * period ? now + period : nextTickNanos + period; // fixed rate, no long burst after a pause
         }
         long t0 = System.nanoTime();
-        side.iterate(); // the lease is confirmed in the iteration's own transaction
+        long step = Math.max(served, robot.step());
+        long run = runId;
+        // the lease is confirmed, and "served step k" published, in the iteration's own transaction
+        side.iterate((writes, n) -> clock.publish(writes, run, step, n));
         nextRenewNanos = t0 + renewEveryNanos;
         long iteration = side.engine().iteration();
-        served = Math.max(served, robot.step());
-        clock.publish(runId, served, iteration, lease);
+        served = step;
         iterationNanosSinceLog += System.nanoTime() - t0;
         if (++iterationsSinceLog >= options.logEvery()) {
             LOG.info("engine {}: iteration {} for robot step {} ({} s simulated, {} timing), {} ms per iteration",

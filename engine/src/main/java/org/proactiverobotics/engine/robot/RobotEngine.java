@@ -11,6 +11,7 @@ import java.util.Objects;
 import java.util.Set;
 import java.util.function.UnaryOperator;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.Writes;
 import org.proactiverobotics.engine.Algorithm;
 import org.proactiverobotics.engine.IterationListener;
 import org.proactiverobotics.engine.IterationSummary;
@@ -99,6 +100,19 @@ public final class RobotEngine {
     private final KnownMap knownMap;
     /** An iteration ran in memory but its transaction did not commit. */
     private boolean aheadOfDatabase;
+    /** What the running iteration commits besides its own writes, or null. */
+    private WithCommit withCommit;
+
+    /** Rows that commit with one iteration, in its transaction: a handshake's "served step k". */
+    @FunctionalInterface
+    public interface WithCommit {
+        /**
+         * @param writes    the iteration's writes (sent with its commit where the server allows)
+         * @param iteration the iteration about to commit
+         * @throws SQLException to roll the iteration back
+         */
+        void write(Writes writes, long iteration) throws SQLException;
+    }
 
     private RobotEngine(ProactiveEngine engine, EngineTables tables, IterationTransaction transaction,
                         ScenarioRegistry registry, List<String> order, KnownMap knownMap) {
@@ -108,6 +122,13 @@ public final class RobotEngine {
         this.transaction = transaction;
         this.registry = registry;
         this.order = order;
+        if (transaction != null) {
+            transaction.beforeCommit(c -> {
+                if (withCommit != null) {
+                    withCommit.write(transaction.writes(), engine.iteration());
+                }
+            });
+        }
     }
 
     /** @return a builder: robot 1, lazy algorithm, the default drive, no plug-ins */
@@ -175,6 +196,27 @@ public final class RobotEngine {
      *                             saved; nothing of the iteration is then in the database
      */
     public IterationSummary iterate() {
+        return iterate(null);
+    }
+
+    /**
+     * {@link #iterate()}, with rows that commit in the iteration's transaction (over a database),
+     * so that they are in the database exactly when the iteration is.
+     *
+     * @param alsoCommit writes those rows, or null
+     * @return the iteration's summary
+     * @throws StateStoreException as {@link #iterate()}
+     */
+    public IterationSummary iterate(WithCommit alsoCommit) {
+        withCommit = alsoCommit;
+        try {
+            return iterateOnce();
+        } finally {
+            withCommit = null;
+        }
+    }
+
+    private IterationSummary iterateOnce() {
         IterationSummary summary;
         if (transaction == null) {
             summary = engine.runIteration();

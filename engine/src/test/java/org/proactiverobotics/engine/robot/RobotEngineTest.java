@@ -19,6 +19,7 @@ import org.proactiverobotics.db.RecordingDataSource;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
 import org.proactiverobotics.db.Schema;
+import org.proactiverobotics.engine.StateStoreException;
 import org.proactiverobotics.engine.testscenarios.Alpha;
 
 /** The one wiring: start order, slots, and plug-ins that are also on the class path. */
@@ -95,6 +96,40 @@ class RobotEngineTest {
             RobotEngine resumed = RobotEngine.builder().robotId(5).database(pool).build();
             assertThat(resumed.resume()).isTrue();
             assertThat(resumed.engine().iteration()).isEqualTo(2);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void rowsGivenToAnIterationCommitWithItOrNotAtAll(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             HikariDataSource pool = Databases.multiStatementPool(db.jdbcUrl(), db.user(), db.password())) {
+            Schema.apply(pool);
+            db.execute("INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (6, 1, 0, 0)");
+            RobotEngine engine = RobotEngine.builder().robotId(6).database(pool).build();
+            engine.startFresh();
+            for (int k = 1; k <= 2; k++) {
+                engine.iterate((writes, n) -> writes.add("UPDATE engine_clock SET step = ?, iteration = ? WHERE robot_id = 6", 2,
+                        (ps, p) -> {
+                            ps.setLong(p, 10 * n);
+                            ps.setLong(p + 1, n);
+                        }));
+            }
+            assertThat(clockAndState(pool)).as("step, iteration served; iteration saved").containsExactly(20L, 2L, 2L);
+
+            assertThatThrownBy(() -> engine.iterate((writes, n) -> writes.add("UPDATE no_such_table SET x = 1", 0, (ps, p) -> { })))
+                    .isInstanceOf(StateStoreException.class);
+            assertThat(clockAndState(pool)).as("the iteration whose rows failed left nothing").containsExactly(20L, 2L, 2L);
+            engine.iterate();
+            assertThat(clockAndState(pool)).as("and its engine goes on from the saved state").containsExactly(20L, 2L, 3L);
+        }
+    }
+
+    private static List<Long> clockAndState(javax.sql.DataSource pool) throws Exception {
+        try (Connection c = pool.getConnection(); Statement s = c.createStatement(); ResultSet rs = s.executeQuery(
+                "SELECT step, iteration, (SELECT iteration FROM engine_state WHERE robot_id = 6) FROM engine_clock WHERE robot_id = 6")) {
+            assertThat(rs.next()).isTrue();
+            return List.of(rs.getLong(1), rs.getLong(2), rs.getLong(3));
         }
     }
 }

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.Writes;
 
 /**
  * {@link RobotClock} over JDBC: {@code robot_clock} and {@code engine_clock} of schema.sql. Runs
@@ -25,6 +26,10 @@ public final class JdbcRobotClock implements RobotClock {
             + " UNION ALL (SELECT 2, id, iteration, sim_time_ms, scenario, command FROM engine_comments WHERE robot_id = ?"
             + " ORDER BY robot_id DESC, id DESC LIMIT 1)"
             + " UNION ALL (SELECT 3, id, 0, 0, sensor, '' FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL)";
+
+    /** "Sensed step k": the robot's half of the handshake. */
+    private static final String PUBLISH = "UPDATE robot_clock SET step = ?, sim_time_ms = ?, state = ?, "
+            + "updated_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ? AND run_id = ?";
 
     private final DataSource dataSource;
     /** The link that takes the reads made with a sync tick, or null. */
@@ -51,6 +56,7 @@ public final class JdbcRobotClock implements RobotClock {
         if (link != null) {
             link.dropHandOff();
             link.forgetWrites(robotId); // the run's readings start again from none
+            link.deferAnswers(sync); // a step's answer commits with its publication: one round trip, one flush
         }
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
@@ -100,22 +106,29 @@ public final class JdbcRobotClock implements RobotClock {
 
     @Override
     public void publish(int robotId, long runId, long step, long simTimeMs, String state) throws LinkException {
+        Writes.Binder binder = (ps, p) -> {
+            ps.setLong(p, step);
+            ps.setLong(p + 1, simTimeMs);
+            ps.setString(p + 2, state);
+            ps.setInt(p + 3, robotId);
+            ps.setLong(p + 4, runId);
+        };
+        int updated = -1;
         if (link != null) {
             link.dropHandOff(); // the engine may write once it sees this step
+            updated = link.commitAnswerWith(robotId, PUBLISH, 5, binder);
         }
-        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement("UPDATE robot_clock "
-                + "SET step = ?, sim_time_ms = ?, state = ?, updated_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ? AND run_id = ?")) {
-            ps.setLong(1, step);
-            ps.setLong(2, simTimeMs);
-            ps.setString(3, state);
-            ps.setInt(4, robotId);
-            ps.setLong(5, runId);
-            if (ps.executeUpdate() == 0) {
-                throw new LinkException("robot_clock has no row for robot " + robotId + " run " + runId
-                        + ": another robot process with the same robot id started a run", null);
+        if (updated < 0) {
+            try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(PUBLISH)) {
+                binder.bind(ps, 1);
+                updated = ps.executeUpdate();
+            } catch (SQLException e) {
+                throw new LinkException("publishing step " + step + " of robot " + robotId + " failed: " + e.getMessage(), e);
             }
-        } catch (SQLException e) {
-            throw new LinkException("publishing step " + step + " of robot " + robotId + " failed: " + e.getMessage(), e);
+        }
+        if (updated == 0) {
+            throw new LinkException("robot_clock has no row for robot " + robotId + " run " + runId
+                    + ": another robot process with the same robot id started a run", null);
         }
     }
 

@@ -56,6 +56,14 @@ public final class JdbcRobotLink implements RobotLink {
     private volatile Boolean multiStatements;
     /** What a sync clock read with the engine's tick, for the next read of it (each taken once); null: nothing. */
     private volatile HandedOff handedOff;
+    /** Whether answers are kept to commit with the step's publication (a sync clock over multi-statements). */
+    private volatile boolean deferAnswers;
+    /** The answer kept for the step's publication, or null. */
+    private volatile Deferred deferred;
+
+    /** An answer not yet committed, for one robot. */
+    private record Deferred(int robotId, SensorAnswer answer) {
+    }
 
     /** The newest command and the pending requests as read with an engine tick, for one robot. */
     private record HandedOff(int robotId, Optional<CommandRecord> command, List<SensorRequest> pending,
@@ -130,8 +138,57 @@ public final class JdbcRobotLink implements RobotLink {
         });
     }
 
+    /**
+     * Whether answers wait for the step's publication, to commit with it (the sync clock asks for
+     * it: the engine reads the answer only once the step is published).
+     */
+    void deferAnswers(boolean defer) {
+        deferAnswers = defer;
+        if (!defer) {
+            deferred = null;
+        }
+    }
+
+    /**
+     * Commits the answer kept for the step's publication together with it, as one round trip.
+     *
+     * @param robotId   the robot
+     * @param statement the publication (an UPDATE), without a semicolon
+     * @param parameters how many '?' it has
+     * @param binder    binds them
+     * @return the publication's update count, or -1 when no answer was kept (publish alone)
+     */
+    int commitAnswerWith(int robotId, String statement, int parameters, Writes.Binder binder) throws LinkException {
+        Deferred d = deferred;
+        if (d == null || d.robotId() != robotId) {
+            return -1;
+        }
+        return withConnection("writing " + d.answer().readingCount() + " reading(s) and the step", c -> {
+            RoundTrip trip = new RoundTrip();
+            write(trip, robotId, d.answer());
+            trip.add(statement, parameters, binder);
+            int[] counts = trip.commit(c);
+            deferred = null; // kept until it commits: a failed publication is retried with it
+            remember(robotId, d.answer());
+            return counts[counts.length - 1];
+        });
+    }
+
     @Override
     public void answer(int robotId, SensorAnswer answer) throws LinkException {
+        Deferred older = deferred;
+        if (older != null) { // never two answers kept: the older commits first
+            commitNow(older.robotId(), older.answer());
+            deferred = null;
+        }
+        if (deferAnswers && Boolean.TRUE.equals(multiStatements)) {
+            deferred = new Deferred(robotId, answer); // goes with the step's publication (commitAnswerWith)
+            return;
+        }
+        commitNow(robotId, answer);
+    }
+
+    private void commitNow(int robotId, SensorAnswer answer) throws LinkException {
         withConnection("writing " + answer.readingCount() + " reading(s)", c -> {
             if (oneRoundTrip(c)) {
                 RoundTrip trip = new RoundTrip();

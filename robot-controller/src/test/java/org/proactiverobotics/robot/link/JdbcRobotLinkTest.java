@@ -231,6 +231,69 @@ class JdbcRobotLinkTest {
         }
     }
 
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void inSyncTimingAStepsAnswerCommitsWithItsPublicationInOneRoundTrip(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             com.zaxxer.hikari.HikariDataSource robotPool = RobotPool.open(db.jdbcUrl(), db.user(), db.password())) {
+            List<String> sent = new java.util.concurrent.CopyOnWriteArrayList<>();
+            try (JdbcRobotLink link = new JdbcRobotLink(RecordingDataSource.of(robotPool, sent))) {
+                RobotClock clock = link.clock();
+                long run = clock.beginRun(1, "sync");
+                link.answer(1, new SensorAnswer(0, new GpsReading(0, 0), null, List.of(), null, new long[0])); // finds out what the server takes
+                clock.publish(1, run, 1, 0, "RUNNING");
+                db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', 1)");
+                long[] ids = link.pendingRequests(1).stream().mapToLong(SensorRequest::id).toArray();
+                sent.clear();
+                link.answer(1, new SensorAnswer(32, new GpsReading(2.5, 0), null, List.of(), null, ids));
+                if (kind == DatabaseKind.MARIADB) {
+                    assertThat(sent).as("nothing sent before the step is published").isEmpty();
+                    assertThat(one(db, "SELECT COUNT(*) FROM gps_stored_values WHERE sim_time_ms = 32")).containsExactly(0L);
+                }
+                clock.publish(1, run, 2, 32, "RUNNING");
+                if (kind == DatabaseKind.MARIADB) {
+                    assertThat(sent).as("readings, marks, the step and the commit together").hasSize(1);
+                    assertThat(sent.get(0)).startsWith("START TRANSACTION").contains("UPDATE robot_clock").endsWith("COMMIT");
+                }
+                assertThat(one(db, "SELECT x_m FROM gps_stored_values WHERE sim_time_ms = 32")).containsExactly(2.5);
+                assertThat(one(db, "SELECT COUNT(*) FROM sensor_requests WHERE answered_sim_time_ms = 32")).containsExactly(1L);
+                assertThat(one(db, "SELECT step, sim_time_ms FROM robot_clock WHERE robot_id = 1")).containsExactly(2L, 32L);
+
+                link.answer(1, new SensorAnswer(64, new GpsReading(3, 0), null, List.of(), null, new long[0]));
+                db.execute("UPDATE robot_clock SET run_id = run_id + 1 WHERE robot_id = 1"); // another process took the robot id
+                org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 3, 64, "RUNNING"))
+                        .isInstanceOf(LinkException.class).hasMessageContaining("another robot process with the same robot id");
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = DatabaseKind.class, names = "MARIADB")
+    void aFailedPublicationKeepsItsAnswerForTheRetry(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             com.zaxxer.hikari.HikariDataSource robotPool = RobotPool.open(db.jdbcUrl(), db.user(), db.password());
+             JdbcRobotLink link = new JdbcRobotLink(robotPool)) {
+            RobotClock clock = link.clock();
+            long run = clock.beginRun(1, "sync");
+            link.answer(1, new SensorAnswer(0, new GpsReading(0, 0), null, List.of(), null, new long[0]));
+            clock.publish(1, run, 1, 0, "RUNNING");
+            link.answer(1, new SensorAnswer(32, new GpsReading(1, 0), new IuReading(0, 0, 0.5), List.of(), null, new long[0]));
+            db.execute("RENAME TABLE iudata TO iudata_away"); // the round trip fails at the inertial reading
+            try {
+                org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 2, 32, "RUNNING"))
+                        .isInstanceOf(LinkException.class);
+                assertThat(one(db, "SELECT COUNT(*) FROM gps_stored_values WHERE sim_time_ms = 32")).as("rolled back").containsExactly(0L);
+                assertThat(one(db, "SELECT step FROM robot_clock WHERE robot_id = 1")).containsExactly(1L);
+            } finally {
+                db.execute("RENAME TABLE iudata_away TO iudata");
+            }
+            clock.publish(1, run, 2, 32, "RUNNING"); // the retry: the kept answer goes with it
+            assertThat(one(db, "SELECT COUNT(*) FROM gps_stored_values WHERE sim_time_ms = 32")).containsExactly(1L);
+            assertThat(one(db, "SELECT yaw_rad FROM iudata WHERE sim_time_ms = 32")).containsExactly(0.5);
+            assertThat(one(db, "SELECT step FROM robot_clock WHERE robot_id = 1")).containsExactly(2L);
+        }
+    }
+
     /** The first row of a query, numbers normalised (Long for integers, Double, Boolean). */
     static List<Object> one(TestDatabase db, String sql) throws SQLException {
         try (Connection c = db.dataSource().getConnection(); PreparedStatement ps = c.prepareStatement(sql);
