@@ -116,14 +116,27 @@ public final class RoundTrip implements Writes {
      *         not known
      */
     public int[] commit(Connection c) throws SQLException {
-        String text = (opens ? "START TRANSACTION;\n" : "") + String.join(";\n", texts) + ";\nCOMMIT";
+        return commit(c, opens);
+    }
+
+    /**
+     * {@link #commit(Connection)}, saying whether the round trip opens its transaction (else one
+     * is open on the connection already).
+     *
+     * @param c       the connection
+     * @param opening whether to send {@code START TRANSACTION} first
+     * @return each added statement's update count, in the order added (-1 for a query)
+     * @throws SQLException as {@link #commit(Connection)}
+     */
+    public int[] commit(Connection c, boolean opening) throws SQLException {
+        String text = (opening ? "START TRANSACTION;\n" : "") + String.join(";\n", texts) + ";\nCOMMIT";
         int[] counts = new int[statements];
         try (PreparedStatement ps = c.prepareStatement(text)) {
             for (int i = 0; i < binders.size(); i++) {
                 binders.get(i).bind(ps, firsts.get(i));
             }
             boolean resultSet = ps.execute();
-            int result = opens ? -1 : 0; // START TRANSACTION's result is not a statement's
+            int result = opening ? -1 : 0; // START TRANSACTION's result is not a statement's
             while (resultSet || ps.getUpdateCount() != -1) { // every statement's result, so that an error is seen
                 if (result >= 0 && result < statements) {
                     counts[result] = resultSet ? -1 : ps.getUpdateCount();

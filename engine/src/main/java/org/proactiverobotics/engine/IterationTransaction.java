@@ -2,8 +2,10 @@ package org.proactiverobotics.engine;
 
 import java.io.PrintWriter;
 import java.sql.Connection;
+import java.sql.PreparedStatement;
 import java.sql.SQLException;
 import java.sql.SQLFeatureNotSupportedException;
+import java.sql.Statement;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.logging.Logger;
@@ -20,14 +22,25 @@ import org.proactiverobotics.db.Writes;
  * saved state then commit together, once — all of an iteration or none of it survives a crash,
  * and a server that flushes its log at every commit does so once per iteration.
  * {@link #getConnection()} is always the plain pool (outside the iteration's transaction).
+ *
+ * <p>On MariaDB and MySQL (multi-statements allowed) the transaction costs no round trip of its
+ * own: the connection stays in auto-commit mode (no {@code set autocommit} before and after), the
+ * iteration's reads run before the transaction opens ({@link #readConnection()}; the pools read
+ * committed rows either way), the first write that must run at once opens it in the same round
+ * trip ({@link #sendNow}), and the writes kept for the commit go with {@code COMMIT}. A caller
+ * that takes {@link #connection()} gets the transaction opened first, so nothing it writes can
+ * escape it.
  */
 public final class IterationTransaction implements DataSource {
 
-    /** Work run on the iteration's connection just before it commits (buffered writes). */
+    /**
+     * Work run just before the iteration commits: writes kept for the commit go to
+     * {@link #writes()}; a statement that must run now takes {@link #connection()}.
+     */
     @FunctionalInterface
     public interface BeforeCommit {
-        /** @param c the iteration's connection, in its transaction */
-        void run(Connection c) throws SQLException;
+        /** @throws SQLException to roll the iteration back */
+        void run() throws SQLException;
     }
 
     private final DataSource pool;
@@ -40,6 +53,8 @@ public final class IterationTransaction implements DataSource {
     private RoundTrip deferred;
     /** Where the open iteration's writes go: {@link #deferred}, or its connection at once. */
     private Writes writes;
+    /** With multi-statements: whether START TRANSACTION was sent (else the iteration has only read). */
+    private boolean serverTransaction;
     private Thread owner;
     private boolean rollbackOnly;
     private long number;
@@ -60,8 +75,8 @@ public final class IterationTransaction implements DataSource {
     }
 
     /**
-     * Registers work to run on the iteration's connection at {@link #commit()}, before the commit
-     * itself, in the order registered (writes buffered during the iteration go as batches).
+     * Registers work to run at {@link #commit()}, before the commit itself, on the iteration's
+     * thread, in the order registered (writes buffered during the iteration go as batches).
      *
      * @param work run once per committing iteration; its failure fails the commit
      */
@@ -82,16 +97,19 @@ public final class IterationTransaction implements DataSource {
         Connection c = null;
         try {
             c = pool.getConnection();
-            c.setAutoCommit(false);
             if (multiStatements == null) {
                 multiStatements = RoundTrip.allowed(c);
+            }
+            if (!multiStatements) {
+                c.setAutoCommit(false);
             }
         } catch (SQLException e) {
             closeQuietly(c);
             throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
         }
         shared = c;
-        deferred = multiStatements ? RoundTrip.endingTransaction() : null;
+        serverTransaction = false;
+        deferred = multiStatements ? new RoundTrip() : null;
         writes = deferred != null ? deferred : Writes.atOnce(c);
         owner = Thread.currentThread();
         rollbackOnly = false;
@@ -99,12 +117,68 @@ public final class IterationTransaction implements DataSource {
     }
 
     /**
-     * @return the open iteration's connection when called on the iteration's thread, else null
-     *         (run the statement on a pooled connection of its own). Never commit or close it.
+     * @return the open iteration's connection, in its transaction, when called on the iteration's
+     *         thread, else null (run the statement on a pooled connection of its own). Never
+     *         commit or close it.
+     * @throws StateStoreException when the transaction cannot be opened on the server
      */
     public Connection connection() {
+        Connection c = readConnection();
+        if (c != null && multiStatements && !serverTransaction) {
+            serverTransaction = true; // set first: a failure below still ends in ROLLBACK
+            try (Statement st = c.createStatement()) {
+                st.execute("START TRANSACTION");
+            } catch (SQLException e) {
+                throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
+            }
+        }
+        return c;
+    }
+
+    /**
+     * @return the open iteration's connection for reads when called on the iteration's thread,
+     *         else null; it sees the iteration's own writes. Never write on it (use
+     *         {@link #connection()}, {@link #sendNow} or {@link #writes()}), commit or close it.
+     */
+    public Connection readConnection() {
         Connection c = shared;
         return c != null && Thread.currentThread() == owner ? c : null;
+    }
+
+    /**
+     * Runs one write at once in the iteration's transaction (when the iteration's later reads or
+     * other connections' rows depend on its order); on MariaDB and MySQL the first such write opens
+     * the transaction in its own round trip.
+     *
+     * @param statement  one SQL statement, without a semicolon
+     * @param parameters how many '?' it has
+     * @param binder     binds them
+     * @return its update count
+     * @throws SQLException when it fails
+     * @throws IllegalStateException when called outside the iteration's thread
+     */
+    public int sendNow(String statement, int parameters, Writes.Binder binder) throws SQLException {
+        Connection c = readConnection();
+        if (c == null) {
+            throw new IllegalStateException("no iteration is open on this thread");
+        }
+        if (!multiStatements || serverTransaction) {
+            try (PreparedStatement ps = c.prepareStatement(statement)) {
+                binder.bind(ps, 1);
+                return ps.executeUpdate();
+            }
+        }
+        serverTransaction = true; // set first: a failure below still ends in ROLLBACK
+        try (PreparedStatement ps = c.prepareStatement("START TRANSACTION;\n" + statement)) {
+            binder.bind(ps, 1);
+            ps.execute(); // START TRANSACTION's result, then the statement's
+            if (!ps.getMoreResults() && ps.getUpdateCount() >= 0) {
+                int count = ps.getUpdateCount();
+                ps.getMoreResults(); // no more: drained, so that an error is seen
+                return count;
+            }
+            throw new SQLException("no update count for: " + statement);
+        }
     }
 
     /**
@@ -115,7 +189,7 @@ public final class IterationTransaction implements DataSource {
      * @return the iteration's writes when called on its thread, else null
      */
     public Writes writes() {
-        return connection() != null ? writes : null;
+        return readConnection() != null ? writes : null;
     }
 
     /** @return a number that changes with every {@link #begin()}: what a per-iteration cache is keyed by */
@@ -147,58 +221,76 @@ public final class IterationTransaction implements DataSource {
      */
     public void commit() throws SQLException {
         Connection c = shared;
-        if (c != null && !rollbackOnly) {
-            try {
-                for (BeforeCommit work : beforeCommit) {
-                    work.run(c);
-                }
-                RoundTrip trip = deferred;
-                deferred = null;
-                if (trip != null && trip.statements() > 0) {
-                    trip.commit(c); // the writes and COMMIT in one round trip; the driver's commit below then sends nothing
-                }
-            } catch (SQLException | RuntimeException e) {
-                rollback();
-                throw e;
-            }
+        if (c == null || rollbackOnly) {
+            end(false);
+            return;
         }
-        end(!rollbackOnly);
+        try {
+            for (BeforeCommit work : beforeCommit) {
+                work.run();
+            }
+            RoundTrip trip = deferred;
+            if (trip == null) {
+                c.commit();
+            } else if (trip.statements() > 0) {
+                trip.commit(c, !serverTransaction); // the writes and COMMIT in one round trip, opening the transaction if need be
+            } else if (serverTransaction) {
+                try (Statement st = c.createStatement()) {
+                    st.execute("COMMIT");
+                }
+            }
+            serverTransaction = false;
+        } catch (SQLException | RuntimeException e) {
+            rollback();
+            throw e;
+        }
+        release(true);
     }
 
     /** Rolls the iteration back and releases the connection. */
     public void rollback() {
-        try {
-            end(false);
-        } catch (SQLException e) {
-            // the connection is being discarded anyway
-        }
+        end(false);
     }
 
-    private void end(boolean commit) throws SQLException {
+    private void end(boolean committed) {
         Connection c = shared;
+        if (c != null) {
+            try {
+                if (deferred == null) {
+                    c.rollback();
+                } else if (serverTransaction) {
+                    try (Statement st = c.createStatement()) {
+                        st.execute("ROLLBACK");
+                    }
+                }
+            } catch (SQLException e) {
+                // the connection is being discarded anyway
+            }
+        }
+        release(committed);
+    }
+
+    private void release(boolean committed) {
+        Connection c = shared;
+        boolean restoreAutoCommit = deferred == null;
         shared = null;
         deferred = null;
         writes = null;
         owner = null;
+        serverTransaction = false;
         if (c == null) {
             return;
         }
-        boolean committed = false;
         try {
-            if (commit) {
-                c.commit();
-                committed = true;
-            } else {
-                c.rollback();
-            }
-        } finally {
-            try {
+            if (restoreAutoCommit) {
                 c.setAutoCommit(true);
-            } finally {
-                c.close();
-                if (!committed) {
-                    rollbackListeners.forEach(Runnable::run);
-                }
+            }
+        } catch (SQLException e) {
+            // closed below; the pool discards a broken connection
+        } finally {
+            closeQuietly(c);
+            if (!committed) {
+                rollbackListeners.forEach(Runnable::run);
             }
         }
     }

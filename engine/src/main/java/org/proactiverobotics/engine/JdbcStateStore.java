@@ -160,7 +160,7 @@ public final class JdbcStateStore implements StateStore {
     @Override
     public void save(int robotId, long iteration, Collection<Rule> nextQueue, SharedMemory memory, List<RuleFailure> failures) {
         List<String> previous = savedRows.remove(robotId); // a failed save leaves nothing believed saved
-        Connection inIteration = transaction == null ? null : transaction.connection();
+        Connection inIteration = transaction == null ? null : transaction.readConnection(); // reads only: the writes go with the commit
         if (inIteration != null) {
             try {
                 savedRows.put(robotId, save(transaction.writes(), inIteration, robotId, iteration, nextQueue, memory, failures,

@@ -108,4 +108,69 @@ class IterationTransactionTest {
             assertThat(plain).isTrue();
         }
     }
+
+    @ParameterizedTest
+    @EnumSource(value = DatabaseKind.class, names = "MARIADB")
+    void withMultiStatementsTheTransactionCostsNoRoundTripOfItsOwnAndStillHoldsEverything(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             com.zaxxer.hikari.HikariDataSource pool = org.proactiverobotics.db.Databases.multiStatementPool(db.jdbcUrl(),
+                     db.user(), db.password())) {
+            java.util.List<String> sent = new java.util.concurrent.CopyOnWriteArrayList<>();
+            IterationTransaction tx = new IterationTransaction(org.proactiverobotics.db.RecordingDataSource.of(pool, sent));
+            tx.begin(); // the first finds out what the server takes
+            tx.commit();
+            sent.clear();
+
+            tx.begin();
+            try (PreparedStatement ps = tx.readConnection().prepareStatement("SELECT COUNT(*) FROM engine_comments")) {
+                ps.executeQuery().close();
+            }
+            assertThat(tx.sendNow(INSERT, 1, (ps, p) -> ps.setString(p, "STOP"))).isEqualTo(1);
+            tx.writes().add(INSERT, 1, (ps, p) -> ps.setString(p, "RECHARGE"));
+            assertThat(db.count("engine_comments")).as("another connection sees nothing yet").isZero();
+            tx.commit();
+            assertThat(db.count("engine_comments")).isEqualTo(2);
+            assertThat(sent).as("the read, the write that opens the transaction, the kept write with COMMIT; no set autocommit")
+                    .hasSize(3);
+            assertThat(sent.get(1)).startsWith("START TRANSACTION");
+            assertThat(sent.get(2)).endsWith("COMMIT");
+
+            sent.clear();
+            tx.begin();
+            tx.writes().add(INSERT, 1, (ps, p) -> ps.setString(p, "KEPT"));
+            tx.commit();
+            assertThat(sent).as("kept writes alone open and commit in one round trip").hasSize(1);
+            assertThat(sent.get(0)).startsWith("START TRANSACTION").endsWith("COMMIT");
+            assertThat(db.count("engine_comments")).isEqualTo(3);
+
+            for (boolean viaConnection : new boolean[] {false, true}) {
+                tx.begin();
+                if (viaConnection) {
+                    insertCommand(tx, "LOST"); // connection() opens the transaction first: nothing escapes it
+                } else {
+                    tx.sendNow(INSERT, 1, (ps, p) -> ps.setString(p, "LOST"));
+                }
+                tx.writes().add(INSERT, 1, (ps, p) -> ps.setString(p, "LOST TOO"));
+                tx.rollback();
+                assertThat(db.count("engine_comments")).as("a rolled-back iteration leaves nothing").isEqualTo(3);
+                tx.begin();
+                try (java.sql.Statement st = tx.readConnection().createStatement();
+                     java.sql.ResultSet rs = st.executeQuery("SELECT @@in_transaction, @@autocommit")) {
+                    rs.next();
+                    assertThat(rs.getInt(1)).as("and no transaction left open on the pooled connection").isZero();
+                    assertThat(rs.getInt(2)).isOne();
+                }
+                tx.commit();
+            }
+
+            tx.begin();
+            tx.sendNow(INSERT, 1, (ps, p) -> ps.setString(p, "HALF"));
+            tx.writes().add("INSERT INTO no_such_table VALUES (1)", 0, (ps, p) -> { });
+            org.assertj.core.api.Assertions.assertThatThrownBy(tx::commit).isInstanceOf(SQLException.class);
+            assertThat(db.count("engine_comments")).as("a failed commit leaves nothing").isEqualTo(3);
+        }
+    }
+
+    private static final String INSERT =
+            "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 1, 0, 'T', ?)";
 }

@@ -123,7 +123,7 @@ public final class RobotEngine {
         this.registry = registry;
         this.order = order;
         if (transaction != null) {
-            transaction.beforeCommit(c -> {
+            transaction.beforeCommit(() -> {
                 if (withCommit != null) {
                     withCommit.write(transaction.writes(), engine.iteration());
                 }
@@ -458,7 +458,9 @@ public final class RobotEngine {
                 transaction = new IterationTransaction(dataSource);
                 if (guard != null) {
                     CommitGuard check = guard;
-                    transaction.beforeCommit(c -> check.check(c, iteration[0]));
+                    IterationTransaction tx = transaction;
+                    // in the transaction, so that the check's row lock holds until the iteration commits
+                    tx.beforeCommit(() -> check.check(tx.connection(), iteration[0]));
                 }
                 base = EngineTables.of(new JdbcRobotTables(transaction, robotId));
                 stateStore = new JdbcStateStore(transaction, codec);

@@ -66,7 +66,7 @@ public final class JdbcRobotTables
 
     /** @return the open iteration's snapshot (read now when this is the iteration's first read), or null outside one */
     private IterationSnapshot snapshot() {
-        Connection c = transaction == null ? null : transaction.connection();
+        Connection c = transaction == null ? null : transaction.readConnection();
         if (c == null) {
             return null;
         }
@@ -84,11 +84,11 @@ public final class JdbcRobotTables
 
     /** @return whether a write is kept for the iteration's commit (an iteration is open on this thread) */
     private boolean buffering() {
-        return transaction != null && transaction.connection() != null;
+        return transaction != null && transaction.readConnection() != null;
     }
 
     /** The iteration's requests and marks just before its commit (with it, where writes are deferred). */
-    private void flush(Connection c) throws SQLException {
+    private void flush() throws SQLException {
         try {
             writePending(transaction.writes());
         } finally {
@@ -432,13 +432,12 @@ public final class JdbcRobotTables
 
     @Override
     public void send(long iteration, long simTimeMs, String scenario, String command) {
-        Connection inIteration = transaction == null ? null : transaction.connection();
-        if (inIteration != null) {
+        if (buffering()) {
             // One command per iteration: sent now, in the iteration's transaction, not with its commit: its id then
             // comes before any row another connection inserts after it (a newer command wins), as it always did.
-            try (PreparedStatement ps = inIteration.prepareStatement(INSERT_COMMAND)) {
-                bind(ps, 1, new Object[] {robotId, iteration, simTimeMs, scenario, command});
-                ps.executeUpdate();
+            try {
+                transaction.sendNow(INSERT_COMMAND, 5, (ps, p) -> bind(ps, p, new Object[] {robotId, iteration, simTimeMs,
+                        scenario, command}));
             } catch (SQLException e) {
                 throw new TablesException("sending command '" + command + "' for robot " + robotId, e);
             }
@@ -526,7 +525,7 @@ public final class JdbcRobotTables
      * else on a pooled connection.
      */
     private <T> T read(String what, String sql, Query<T> query) {
-        Connection inIteration = transaction == null ? null : transaction.connection();
+        Connection inIteration = transaction == null ? null : transaction.readConnection();
         try {
             if (inIteration != null) {
                 try (PreparedStatement ps = inIteration.prepareStatement(sql)) {

@@ -81,6 +81,8 @@ class RobotEngineTest {
             if (kind == DatabaseKind.MARIADB) {
                 assertThat(statements.size()).as("at most the snapshot, then the writes with COMMIT").isBetween(1, 2);
                 assertThat(statements.get(statements.size() - 1)).contains("engine_state", "engine_queue").endsWith("COMMIT");
+                assertThat(sent).as("no transaction control of its own (set autocommit, commit)")
+                        .doesNotContain("setAutoCommit", "commit", "rollback");
                 assertThat(statements.subList(0, statements.size() - 1)).allMatch(x -> x.startsWith("SELECT"));
             } else {
                 assertThat(statements.size()).as("H2: a statement each").isGreaterThanOrEqualTo(2);
