@@ -20,6 +20,7 @@ COPY scenario-testkit/pom.xml scenario-testkit/
 COPY sim2d/pom.xml sim2d/
 COPY robot-controller/pom.xml robot-controller/
 COPY app/pom.xml app/
+COPY e2e/pom.xml e2e/
 COPY bench/pom.xml bench/
 RUN ./mvnw -B -ntp -q package -DskipTests -pl app -am
 # Then the sources: the jar app/target/proactive.jar, as `./mvnw package` makes it.
