@@ -5,7 +5,6 @@ import java.sql.PreparedStatement;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
-import org.h2.jdbc.JdbcConnection;
 
 /**
  * One statement for many rows of one table: {@code INSERT ... VALUES (?, ?), (?, ?), ...}, or the
@@ -115,7 +114,18 @@ public final class MultiRow {
      */
     public static boolean isH2(Connection c) throws SQLException {
         // a class check through the pool's proxy: asked on every upsert, where metadata was an object a call
-        return c.isWrapperFor(JdbcConnection.class);
+        return H2_CONNECTION != null && c.isWrapperFor(H2_CONNECTION);
+    }
+
+    /** H2's connection class, or null when H2 is not on the class path (then no connection is H2's). */
+    private static final Class<?> H2_CONNECTION = h2Connection();
+
+    private static Class<?> h2Connection() {
+        try {
+            return Class.forName("org.h2.jdbc.JdbcConnection", false, MultiRow.class.getClassLoader());
+        } catch (ClassNotFoundException e) {
+            return null;
+        }
     }
 
     /**
