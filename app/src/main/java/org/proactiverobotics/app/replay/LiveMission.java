@@ -28,14 +28,14 @@ public final class LiveMission {
 
     /** The most commands read at one poll: a viewer started late catches up in a few polls. */
     private static final int BATCH = 4000;
-    /** Readings per scan: the default robot's rays (the database does not hold the world's own). */
-    private static final int RAYS = org.proactiverobotics.sim2d.SimRobot.sensorAnglesDeg().length;
     /** How far before a batch's first command the readings are looked for, simulated ms. */
     private static final long READINGS_BEFORE_MS = 2000;
 
     private final DataSource pool;
     private final int robotId;
     private volatile ReplayData data;
+    /** The robot's rays as its readings say (index, angle, range): known from its first scan on. */
+    private int rays;
     private volatile Map<String, Integer> slots = Map.of();
     private volatile JsonObject mission;
     private long lastCommandId;
@@ -49,7 +49,7 @@ public final class LiveMission {
     public LiveMission(DataSource pool, int robotId) {
         this.pool = pool;
         this.robotId = robotId;
-        this.data = new ReplayData(Map.of());
+        this.data = new ReplayData(Map.of(), 0);
     }
 
     /** @return the steps read so far (a new object when a new run of the robot started) */
@@ -62,7 +62,7 @@ public final class LiveMission {
         return slots.isEmpty() ? RobotEngine.freshSlots(ScenarioPlugins.none()) : slots;
     }
 
-    /** @return the checkpoints and the station as the page draws them, or null before the robot seeded them */
+    /** @return the checkpoints, the station and the rays as the page draws them, or null before the robot seeded them and sent a scan */
     public JsonObject mission() {
         return mission;
     }
@@ -78,6 +78,10 @@ public final class LiveMission {
             c.setReadOnly(true);
             if (mission == null) {
                 mission = readMission(c);
+                if (mission == null) {
+                    return 0; // no checkpoints or no scan yet: nothing is drawn before the robot is known
+                }
+                data = new ReplayData(Map.of(), rays);
             }
             Map<String, Integer> priorities = new LinkedHashMap<>();
             Map<String, Integer> strategySlots = new LinkedHashMap<>();
@@ -108,10 +112,14 @@ public final class LiveMission {
             if (ids.isEmpty()) {
                 return 0;
             }
-            if (ids.get(0)[1] <= data.lastIteration()) {
-                data = new ReplayData(Map.of()); // a new run of the robot: start over
+            if (ids.get(0)[1] <= data.lastIteration()) { // a new run of the robot: start over
                 reportedCheckpoints.clear();
+                data = new ReplayData(Map.of(), 0);
                 mission = readMission(c);
+                if (mission == null) {
+                    return 0;
+                }
+                data = new ReplayData(Map.of(), rays);
             }
             long from = ids.get(0)[2] - READINGS_BEFORE_MS;
             long to = ids.get(ids.size() - 1)[2];
@@ -196,9 +204,9 @@ public final class LiveMission {
             try (ResultSet rs = ps.executeQuery()) {
                 while (rs.next()) {
                     int index = rs.getInt(2);
-                    if (index >= 0 && index < RAYS) {
+                    if (index >= 0 && index < rays) {
                         double[] scan = out.computeIfAbsent(rs.getLong(1), t -> {
-                            double[] none = new double[RAYS];
+                            double[] none = new double[rays];
                             Arrays.fill(none, Double.NaN);
                             return none;
                         });
@@ -269,12 +277,31 @@ public final class LiveMission {
         w.add("checkpoints", checkpoints);
         w.addProperty("checkpointRadiusM", radius);
         w.add("obstacles", new JsonArray());
-        w.addProperty("robotRadiusM", 0.12); // the world file's defaults: the database does not hold the robot's shape
-        w.addProperty("sensorRangeM", 1.0);
-        JsonArray angles = new JsonArray();
-        for (double deg : org.proactiverobotics.sim2d.SimRobot.sensorAnglesDeg()) {
-            angles.add(Math.toRadians(deg));
+        w.addProperty("robotRadiusM", 0.12); // the world file's default: the database does not hold the robot's shape
+        // The rays as the robot's newest scan has them (any robot the world file draws, not the default one).
+        TreeMap<Integer, double[]> scanRays = new TreeMap<>();
+        try (PreparedStatement ps = c.prepareStatement("SELECT sensor_index, angle_rad, range_m FROM distance_sensor_data"
+                + " WHERE robot_id = ? AND sim_time_ms = (SELECT MAX(sim_time_ms) FROM distance_sensor_data WHERE robot_id = ?)")) {
+            ps.setInt(1, robotId);
+            ps.setInt(2, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    scanRays.put(rs.getInt(1), new double[] {rs.getDouble(2), rs.getDouble(3)});
+                }
+            }
         }
+        if (scanRays.isEmpty() || scanRays.firstKey() < 0) {
+            return null; // every robot has at least one ray: its first answer comes within a few steps
+        }
+        rays = scanRays.lastKey() + 1;
+        JsonArray angles = new JsonArray();
+        double range = 0;
+        for (int k = 0; k < rays; k++) {
+            double[] ray = scanRays.get(k);
+            angles.add(ray == null ? 0.0 : ray[0]);
+            range = Math.max(range, ray == null ? 0 : ray[1]);
+        }
+        w.addProperty("sensorRangeM", range);
         w.add("sensorAnglesRad", angles);
         try (PreparedStatement ps = c.prepareStatement("SELECT x_m, y_m, radius_m FROM recharge_station WHERE robot_id = ?")) {
             ps.setInt(1, robotId);
