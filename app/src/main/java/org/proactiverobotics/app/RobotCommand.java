@@ -1,5 +1,6 @@
 package org.proactiverobotics.app;
 
+import org.proactiverobotics.protocol.Timing;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -107,7 +108,7 @@ public final class RobotCommand implements Callable<Integer> {
 
     private int runMission(WorldSpec worldSpec, OutputDirectory output, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
         Path outDir = output.path();
-        Lockstep.Timing mode = Lockstep.Timing.valueOf(timing.toUpperCase(Locale.ROOT));
+        Timing mode = Timing.of(timing).orElseThrow(); // checked by validate()
         stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), DbOptions.redacted(db.url()), mode.label());
         stdout.flush();
         MissionReport report;
@@ -150,7 +151,7 @@ public final class RobotCommand implements Callable<Integer> {
         if (dbProblem != null) {
             return dbProblem;
         }
-        if (!timing.equals("sync") && !timing.equals("realtime")) {
+        if (Timing.of(timing).isEmpty()) {
             return "--timing must be sync or realtime: " + timing;
         }
         if (noise.problem() != null) {

@@ -8,6 +8,8 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.BooleanSupplier;
 import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.db.PollPacing;
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 import org.proactiverobotics.robot.link.LinkException;
 import org.proactiverobotics.robot.link.RobotClock;
 import org.proactiverobotics.robot.link.RobotClock.EngineTick;
@@ -29,19 +31,6 @@ import org.slf4j.LoggerFactory;
  * A stop request ends any wait.
  */
 public final class Lockstep implements StepGate {
-
-    /** How the robot's steps relate to the engine's iterations. */
-    public enum Timing {
-        /** One engine iteration per control step, the robot waiting for it (the default). */
-        SYNC,
-        /** The robot steps on the wall clock; the engine iterates on its own period. */
-        REALTIME;
-
-        /** @return the name in robot_clock.timing and on the command line */
-        public String label() {
-            return name().toLowerCase(Locale.ROOT);
-        }
-    }
 
     private static final Logger LOG = LoggerFactory.getLogger(Lockstep.class);
     private static final long FIRST_STATUS_NANOS = TimeUnit.SECONDS.toNanos(2);
@@ -79,7 +68,7 @@ public final class Lockstep implements StepGate {
      * @return true when acknowledged, false when a stop was requested first
      */
     public boolean begin() {
-        Long id = retry("starting a run", () -> clock.beginRun(robotId, timing.label()));
+        Long id = retry("starting a run", () -> clock.beginRun(robotId, timing));
         if (id == null) {
             return false;
         }
@@ -94,7 +83,7 @@ public final class Lockstep implements StepGate {
         lastSimTimeMs = simTimeMs;
         if (timing == Timing.REALTIME) {
             try {
-                clock.publish(robotId, runId, step, simTimeMs, "RUNNING");
+                clock.publish(robotId, runId, step, simTimeMs, RunState.RUNNING);
             } catch (LinkException e) {
                 // the engine iterates on its own period: a lost progress line costs nothing
                 if (publishFailures++ == 0) {
@@ -104,7 +93,7 @@ public final class Lockstep implements StepGate {
             return true;
         }
         if (retry("publishing step " + step, () -> {
-            clock.publish(robotId, runId, step, simTimeMs, "RUNNING");
+            clock.publish(robotId, runId, step, simTimeMs, RunState.RUNNING);
             return Boolean.TRUE;
         }) == null) {
             return false;
@@ -117,7 +106,7 @@ public final class Lockstep implements StepGate {
      *
      * @param state FINISHED (the mission ended) or STOPPED (a stop was requested)
      */
-    public void finish(String state) {
+    public void finish(RunState state) {
         if (runId < 0) {
             return;
         }

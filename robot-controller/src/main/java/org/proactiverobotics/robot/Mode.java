@@ -1,6 +1,7 @@
 package org.proactiverobotics.robot;
 
 import java.util.Optional;
+import org.proactiverobotics.protocol.CommandWord;
 
 /**
  * What the robot is doing: the paper's {@code mode} enumeration, switched on every control
@@ -9,34 +10,34 @@ import java.util.Optional;
  */
 public enum Mode {
     /** Before the first command: stopped, waiting for instructions. Not a command. */
-    WAITING(-1),
-    /** {@code STOP}: both wheels at 0. */
-    STOP(0),
-    /** {@code DRIVE <left_mps> <right_mps>}: each wheel in [-max, max]. */
-    DRIVE(2),
-    /** {@code FORWARD <mps>}: both wheels at mps, in [-max, max] (negative backs up). */
-    FORWARD(1),
-    /** {@code TURN_LEFT <mps>}: turn on the spot counter-clockwise, wheels at -mps / +mps, mps in [0, max]. */
-    TURN_LEFT(1),
-    /** {@code TURN_RIGHT <mps>}: turn on the spot clockwise, wheels at +mps / -mps, mps in [0, max]. */
-    TURN_RIGHT(1),
-    /** {@code RECHARGE}: stop and charge; charging only starts at the recharge station. */
-    RECHARGE(0);
+    WAITING(null),
+    /** {@link CommandWord#STOP}. */
+    STOP(CommandWord.STOP),
+    /** {@link CommandWord#DRIVE}. */
+    DRIVE(CommandWord.DRIVE),
+    /** {@link CommandWord#FORWARD}. */
+    FORWARD(CommandWord.FORWARD),
+    /** {@link CommandWord#TURN_LEFT}. */
+    TURN_LEFT(CommandWord.TURN_LEFT),
+    /** {@link CommandWord#TURN_RIGHT}. */
+    TURN_RIGHT(CommandWord.TURN_RIGHT),
+    /** {@link CommandWord#RECHARGE}. */
+    RECHARGE(CommandWord.RECHARGE);
 
-    private final int arguments;
+    private final CommandWord word;
 
-    Mode(int arguments) {
-        this.arguments = arguments;
+    Mode(CommandWord word) {
+        this.word = word;
     }
 
     /** @return how many numbers the command takes, or -1 when this mode is not a command */
     public int arguments() {
-        return arguments;
+        return word == null ? -1 : word.arguments();
     }
 
     /** @return whether the engine can send this mode as a command */
     public boolean isCommand() {
-        return arguments >= 0;
+        return word != null;
     }
 
     /**
@@ -46,11 +47,6 @@ public enum Mode {
      * @return the mode, or empty when no command has that name
      */
     public static Optional<Mode> command(String name) {
-        for (Mode m : values()) {
-            if (m.isCommand() && m.name().equals(name)) {
-                return Optional.of(m);
-            }
-        }
-        return Optional.empty();
+        return CommandWord.of(name).map(w -> valueOf(w.name()));
     }
 }

@@ -1,5 +1,7 @@
 package org.proactiverobotics.robot;
 
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.concurrent.CompletableFuture;
@@ -45,8 +47,8 @@ class LockstepTest {
             db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 0, 1, 1), (2, 0, 2, 2)");
             db.execute("INSERT INTO battery_level (robot_id, sim_time_ms, level_pct, charging) VALUES (1, 0, 50, FALSE)");
             JdbcRobotClock clock = new JdbcRobotClock(db.dataSource());
-            long first = clock.beginRun(1, "sync");
-            long second = clock.beginRun(1, "sync");
+            long first = clock.beginRun(1, Timing.SYNC);
+            long second = clock.beginRun(1, Timing.SYNC);
             assertThat(second).isGreaterThan(first);
             assertThat(db.count("gps_stored_values")).isEqualTo(1); // robot 2's stays
             assertThat(db.count("battery_level")).isZero();
@@ -63,7 +65,7 @@ class LockstepTest {
     void inSyncTimingTheRobotActsOnlyOnStepsTheEngineServed(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind); ProactiveController robot = controller(db)) {
             FakeEngine engine = new FakeEngine(db.dataSource(), 1);
-            Lockstep lockstep = new Lockstep(new JdbcRobotClock(db.dataSource()), 1, Lockstep.Timing.SYNC, robot::stopRequested);
+            Lockstep lockstep = new Lockstep(new JdbcRobotClock(db.dataSource()), 1, Timing.SYNC, robot::stopRequested);
             AtomicBoolean engineUp = new AtomicBoolean(true);
             AtomicLong lastServed = new AtomicLong(-1);
             // the scripted engine: acknowledges the run, then serves steps 1..5 and no more
@@ -96,7 +98,7 @@ class LockstepTest {
             assertThat(robot.loopTimes().steps()).isEqualTo(5);
             engineUp.set(false);
             engineThread.get(10, TimeUnit.SECONDS);
-            lockstep.finish("STOPPED");
+            lockstep.finish(RunState.STOPPED);
             assertThat(engine.rows("SELECT step, state FROM robot_clock WHERE robot_id = 1").get(0)).containsExactly(6L, "STOPPED");
             assertThat(lockstep.lastTick()).hasValueSatisfying(t -> assertThat(t.step()).isEqualTo(5));
         }
@@ -107,7 +109,7 @@ class LockstepTest {
     void aStopEndsTheWaitForAnEngineThatNeverComes(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind)) {
             AtomicBoolean stop = new AtomicBoolean();
-            Lockstep lockstep = new Lockstep(new JdbcRobotClock(db.dataSource()), 1, Lockstep.Timing.SYNC, stop::get);
+            Lockstep lockstep = new Lockstep(new JdbcRobotClock(db.dataSource()), 1, Timing.SYNC, stop::get);
             CompletableFuture<Boolean> begun = CompletableFuture.supplyAsync(lockstep::begin);
             Thread.sleep(300);
             assertThat(begun).isNotDone();
@@ -122,7 +124,7 @@ class LockstepTest {
         try (TestDatabase db = TestDatabases.open(kind)) {
             FakeEngine engine = new FakeEngine(db.dataSource(), 1);
             JdbcRobotClock clock = new JdbcRobotClock(db.dataSource());
-            Lockstep lockstep = new Lockstep(clock, 1, Lockstep.Timing.REALTIME, () -> false);
+            Lockstep lockstep = new Lockstep(clock, 1, Timing.REALTIME, () -> false);
             CompletableFuture<Boolean> begun = CompletableFuture.supplyAsync(lockstep::begin);
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
             while (engine.count("robot_clock") == 0 && System.nanoTime() < deadline) {

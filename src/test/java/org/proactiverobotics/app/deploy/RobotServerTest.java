@@ -1,5 +1,7 @@
 package org.proactiverobotics.app.deploy;
 
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
@@ -39,7 +41,7 @@ class RobotServerTest {
                     s.executeUpdate("INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (" + robot + ", 10, 'not json')");
                 }
             }
-            EngineClock.RobotTick running = new EngineClock.RobotTick(RUN, 11, 352, "sync", "RUNNING");
+            EngineClock.RobotTick running = new EngineClock.RobotTick(RUN, 11, 352, Timing.SYNC, RunState.RUNNING);
 
             RobotServer alone = server(ds, 1, false);
             assertThatThrownBy(() -> alone.turn(running, System.nanoTime())).isInstanceOf(CorruptStateException.class)
@@ -59,12 +61,12 @@ class RobotServerTest {
             Schema.apply(ds);
             RobotServer server = server(ds, 3, true);
             long t = System.nanoTime();
-            assertThat(server.turn(new EngineClock.RobotTick(7, 5, 160, "sync", "FINISHED"), t)).isFalse();
+            assertThat(server.turn(new EngineClock.RobotTick(7, 5, 160, Timing.SYNC, RunState.FINISHED), t)).isFalse();
             assertThat(server.serving()).as("an ended run is nobody's to take up").isFalse();
 
-            assertThat(server.turn(new EngineClock.RobotTick(8, 1, 32, "sync", "RUNNING"), t)).as("one iteration").isTrue();
+            assertThat(server.turn(new EngineClock.RobotTick(8, 1, 32, Timing.SYNC, RunState.RUNNING), t)).as("one iteration").isTrue();
             assertThat(server.serving()).isTrue();
-            EngineClock.RobotTick ended = new EngineClock.RobotTick(8, 1, 32, "sync", "FINISHED");
+            EngineClock.RobotTick ended = new EngineClock.RobotTick(8, 1, 32, Timing.SYNC, RunState.FINISHED);
             assertThat(server.turn(ended, t + 1)).isFalse();
             assertThat(server.turn(ended, t + java.util.concurrent.TimeUnit.SECONDS.toNanos(30))).isFalse();
             assertThat(server.serving()).as("kept for a while after its run").isTrue();

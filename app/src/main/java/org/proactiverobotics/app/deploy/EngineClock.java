@@ -9,6 +9,8 @@ import java.util.Map;
 import java.util.Optional;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.Writes;
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 
 /**
  * The engine's side of the lockstep handshake (schema.sql: {@code robot_clock}, read;
@@ -23,19 +25,34 @@ public final class EngineClock {
      * @param runId     its run (one robot process)
      * @param step      the control step whose sensing is done
      * @param simTimeMs the simulated time of that sensing, ms
-     * @param timing    "sync" or "realtime"
-     * @param state     RUNNING, FINISHED or STOPPED
+     * @param timing    sync or realtime, or null for a word this version does not know (never served)
+     * @param state     running, finished or stopped, or null for a word this version does not know (not running)
      */
-    public record RobotTick(long runId, long step, long simTimeMs, String timing, String state) {
+    public record RobotTick(long runId, long step, long simTimeMs, Timing timing, RunState state) {
         /** @return whether the robot waits for one iteration per step */
         public boolean sync() {
-            return "sync".equals(timing);
+            return timing == Timing.SYNC;
         }
 
         /** @return whether the run goes on */
         public boolean running() {
-            return "RUNNING".equals(state);
+            return state == RunState.RUNNING;
         }
+
+        /** @return the timing as robot_clock has it, for a log line */
+        public String timingLabel() {
+            return timing == null ? "unknown" : timing.label();
+        }
+
+        /** @return the state in lower case, for a log line */
+        public String stateLabel() {
+            return state == null ? "unknown" : state.name().toLowerCase(java.util.Locale.ROOT);
+        }
+    }
+
+    private static RobotTick tick(ResultSet rs, int first) throws SQLException {
+        return new RobotTick(rs.getLong(first), rs.getLong(first + 1), rs.getLong(first + 2),
+                Timing.of(rs.getString(first + 3)).orElse(null), RunState.of(rs.getString(first + 4)).orElse(null));
     }
 
     /**
@@ -66,8 +83,7 @@ public final class EngineClock {
                 "SELECT run_id, step, sim_time_ms, timing, state FROM robot_clock WHERE robot_id = ?")) {
             ps.setInt(1, robotId);
             try (ResultSet rs = ps.executeQuery()) {
-                return rs.next() ? Optional.of(new RobotTick(rs.getLong(1), rs.getLong(2), rs.getLong(3), rs.getString(4),
-                        rs.getString(5))) : Optional.empty();
+                return rs.next() ? Optional.of(tick(rs, 1)) : Optional.empty();
             }
         }
     }
@@ -92,8 +108,7 @@ public final class EngineClock {
             }
             try (ResultSet rs = ps.executeQuery()) {
                 while (rs.next()) {
-                    out.put(rs.getInt(1), new RobotTick(rs.getLong(2), rs.getLong(3), rs.getLong(4), rs.getString(5),
-                            rs.getString(6)));
+                    out.put(rs.getInt(1), tick(rs, 2));
                 }
             }
         }

@@ -1,5 +1,7 @@
 package org.proactiverobotics.app.deploy;
 
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 import com.zaxxer.hikari.HikariDataSource;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -50,11 +52,11 @@ public final class RobotProcess {
      * @param heartbeat      touched while the robot steps
      * @param noise          the sensors' noise, drawn from the world's seed
      */
-    public record Options(WorldSpec world, DbOptions db, int robotId, Lockstep.Timing timing, double realTimeFactor,
+    public record Options(WorldSpec world, DbOptions db, int robotId, Timing timing, double realTimeFactor,
                           long logEvery, Heartbeat heartbeat, SensorNoise noise) {
 
         /** Options with perfect sensors. */
-        public Options(WorldSpec world, DbOptions db, int robotId, Lockstep.Timing timing, double realTimeFactor,
+        public Options(WorldSpec world, DbOptions db, int robotId, Timing timing, double realTimeFactor,
                        long logEvery, Heartbeat heartbeat) {
             this(world, db, robotId, timing, realTimeFactor, logEvery, heartbeat, SensorNoise.NONE);
         }
@@ -90,7 +92,7 @@ public final class RobotProcess {
         if (!DatabaseWait.await(options.db(), "robot_clock", signal::stopRequested)) {
             return report(sim, Outcome.STOPPED, 0, null, Map.of(), 0);
         }
-        boolean sync = options.timing() == Lockstep.Timing.SYNC;
+        boolean sync = options.timing() == Timing.SYNC;
         RobotConfig config = RobotConfig.defaults(robotId).withRealTimeFactor(sync ? 0 : options.realTimeFactor());
         Map<String, Long> wins = new TreeMap<>();
         try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password());
@@ -111,7 +113,7 @@ public final class RobotProcess {
             robot.run(new StatusGate(lockstep, sim, options, tracer));
             double wallS = (System.nanoTime() - start) / 1e9;
             Outcome outcome = outcome(sim, robot.checkpointUnreachable());
-            lockstep.finish(outcome == Outcome.STOPPED ? "STOPPED" : "FINISHED");
+            lockstep.finish(outcome == Outcome.STOPPED ? RunState.STOPPED : RunState.FINISHED);
             long iterations = lockstep.lastTick().map(t -> t.iteration()).orElse(0L);
             return report(sim, outcome, wallS, robot.loopTimes(), wins, iterations);
         }

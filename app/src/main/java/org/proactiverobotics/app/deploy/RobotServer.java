@@ -207,7 +207,7 @@ public final class RobotServer {
             if (!finishedLogged) {
                 finishedLogged = true;
                 LOG.info("engine {}: robot run {} {} at step {} ({} s simulated); nothing to serve until a new run",
-                        robotId, runId, robot.state().toLowerCase(Locale.ROOT), robot.step(), secs(robot.simTimeMs()));
+                        robotId, runId, robot.stateLabel(), robot.step(), secs(robot.simTimeMs()));
             }
             renewWhileIdle(now);
             return false;
@@ -237,7 +237,7 @@ public final class RobotServer {
         iterationNanosSinceLog += System.nanoTime() - t0;
         if (++iterationsSinceLog >= options.logEvery()) {
             LOG.info("engine {}: iteration {} for robot step {} ({} s simulated, {} timing), {} ms per iteration",
-                    robotId, iteration, robot.step(), secs(robot.simTimeMs()), robot.timing(),
+                    robotId, iteration, robot.step(), secs(robot.simTimeMs()), robot.timingLabel(),
                     String.format(Locale.ROOT, "%.2f", iterationNanosSinceLog / 1e6 / iterationsSinceLog));
             iterationsSinceLog = 0;
             iterationNanosSinceLog = 0;
@@ -304,7 +304,7 @@ public final class RobotServer {
             served = 0;
             clock.publish(robot.runId(), 0, 0, lease);
             LOG.info("engine {}: new robot run {} ({} timing): commands and requests of earlier runs cleared, "
-                    + "checkpoints not reached, engine started fresh", robotId, robot.runId(), robot.timing());
+                    + "checkpoints not reached, engine started fresh", robotId, robot.runId(), robot.timingLabel());
         }
         if (side.ensureStrategy(options.strategy())) { // a strategy set with the strategy command survives restarts
             LOG.info("engine {}: strategy {} written", robotId, options.strategy().name());

@@ -63,12 +63,12 @@ public final class DirectEngineTables
 
     @Override
     public boolean pending(Sensor sensor) {
-        return rows.pending(sensor.name());
+        return rows.pending(sensor.word().name());
     }
 
     @Override
     public void request(Sensor sensor, long iteration) {
-        rows.request(sensor.name());
+        rows.request(sensor.word().name());
     }
 
     @Override

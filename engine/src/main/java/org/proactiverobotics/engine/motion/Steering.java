@@ -2,6 +2,7 @@ package org.proactiverobotics.engine.motion;
 
 import java.math.BigDecimal;
 import java.math.RoundingMode;
+import org.proactiverobotics.protocol.CommandWord;
 
 /**
  * Steering laws and the text of the robot's commands ({@code DRIVE <left_mps> <right_mps>},
@@ -10,9 +11,9 @@ import java.math.RoundingMode;
 public final class Steering {
 
     /** The command that stops both wheels. */
-    public static final String STOP = "STOP";
+    public static final String STOP = CommandWord.STOP.name();
     /** The command that stops and charges at the station. */
-    public static final String RECHARGE = "RECHARGE";
+    public static final String RECHARGE = CommandWord.RECHARGE.name();
 
     /** Turn rate per radian of heading error, 1/s. */
     private static final double TURN_GAIN = 3.0;
@@ -102,7 +103,7 @@ public final class Steering {
             left *= scale;
             right *= scale;
         }
-        StringBuilder command = new StringBuilder(24).append("DRIVE ");
+        StringBuilder command = new StringBuilder(24).append(CommandWord.DRIVE.name()).append(' ');
         return appendFixed4(appendFixed4(command, left).append(' '), right).toString();
     }
 
@@ -138,7 +139,7 @@ public final class Steering {
         int second = command.indexOf(' ', first + 1);
         String word = command.substring(0, first);
         try {
-            if (word.equals("DRIVE")) {
+            if (word.equals(CommandWord.DRIVE.name())) {
                 return second < 0 ? null : new double[] {Double.parseDouble(command.substring(first + 1, second)),
                         Double.parseDouble(command.substring(second + 1))};
             }

@@ -88,7 +88,7 @@ final class IterationSnapshot {
                         case 5 -> {
                             String name = rs.getString(9);
                             for (Sensor sensor : Sensor.values()) {
-                                if (sensor.name().equals(name)) {
+                                if (sensor.word().name().equals(name)) {
                                     s.pending.add(sensor);
                                 }
                             }

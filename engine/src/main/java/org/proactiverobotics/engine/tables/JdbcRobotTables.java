@@ -223,10 +223,10 @@ public final class JdbcRobotTables
         try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(
                 "SELECT sensor FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL AND sensor = ?")) {
             ps.setInt(1, robotId);
-            ps.setString(2, sensor.name());
+            ps.setString(2, sensor.word().name());
             try (ResultSet rs = ps.executeQuery()) {
                 while (rs.next()) {
-                    if (sensor.name().equals(rs.getString(1))) {
+                    if (sensor.word().name().equals(rs.getString(1))) {
                         return true;
                     }
                 }
@@ -242,11 +242,11 @@ public final class JdbcRobotTables
         if (buffering()) {
             IterationSnapshot snap = snapshot();
             snap.requested(sensor);
-            pendingRequests.add(new Object[] {robotId, sensor.name(), iteration});
+            pendingRequests.add(new Object[] {robotId, sensor.word().name(), iteration});
             return;
         }
         update("requesting " + sensor + " data",
-                "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)", robotId, sensor.name(),
+                "INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (?, ?, ?)", robotId, sensor.word().name(),
                 iteration);
     }
 

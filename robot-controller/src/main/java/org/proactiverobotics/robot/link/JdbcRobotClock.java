@@ -11,6 +11,8 @@ import java.util.Objects;
 import java.util.Optional;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.Writes;
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 
 /**
  * {@link RobotClock} over JDBC: {@code robot_clock} and {@code engine_clock} of schema.sql. Runs
@@ -51,8 +53,8 @@ public final class JdbcRobotClock implements RobotClock {
     }
 
     @Override
-    public long beginRun(int robotId, String timing) throws LinkException {
-        sync = "sync".equals(timing); // in real time the engine writes while the robot steps: nothing handed off
+    public long beginRun(int robotId, Timing timing) throws LinkException {
+        sync = timing == Timing.SYNC; // in real time the engine writes while the robot steps: nothing handed off
         if (link != null) {
             link.dropHandOff();
             link.forgetWrites(robotId); // the run's readings start again from none
@@ -81,14 +83,14 @@ public final class JdbcRobotClock implements RobotClock {
                 try (PreparedStatement ps = c.prepareStatement("UPDATE robot_clock SET run_id = ?, step = 0, sim_time_ms = 0, "
                         + "timing = ?, state = 'RUNNING', updated_at = CURRENT_TIMESTAMP(3) WHERE robot_id = ?")) {
                     ps.setLong(1, runId);
-                    ps.setString(2, timing);
+                    ps.setString(2, timing.label());
                     ps.setInt(3, robotId);
                     if (ps.executeUpdate() == 0) {
                         try (PreparedStatement insert = c.prepareStatement("INSERT INTO robot_clock "
                                 + "(robot_id, run_id, step, sim_time_ms, timing, state) VALUES (?, ?, 0, 0, ?, 'RUNNING')")) {
                             insert.setInt(1, robotId);
                             insert.setLong(2, runId);
-                            insert.setString(3, timing);
+                            insert.setString(3, timing.label());
                             insert.executeUpdate();
                         }
                     }
@@ -105,11 +107,11 @@ public final class JdbcRobotClock implements RobotClock {
     }
 
     @Override
-    public void publish(int robotId, long runId, long step, long simTimeMs, String state) throws LinkException {
+    public void publish(int robotId, long runId, long step, long simTimeMs, RunState state) throws LinkException {
         Writes.Binder binder = (ps, p) -> {
             ps.setLong(p, step);
             ps.setLong(p + 1, simTimeMs);
-            ps.setString(p + 2, state);
+            ps.setString(p + 2, state.name());
             ps.setInt(p + 3, robotId);
             ps.setLong(p + 4, runId);
         };

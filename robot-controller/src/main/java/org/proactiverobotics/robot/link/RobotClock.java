@@ -1,6 +1,8 @@
 package org.proactiverobotics.robot.link;
 
 import java.util.Optional;
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 
 /**
  * The robot's side of the lockstep handshake with an engine process (tables
@@ -24,11 +26,11 @@ public interface RobotClock {
      * a new run id (larger than any before), in one transaction.
      *
      * @param robotId the robot
-     * @param timing  the timing mode ("sync" or "realtime")
+     * @param timing  sync or realtime
      * @return the new run id
      * @throws LinkException when nothing could be done
      */
-    long beginRun(int robotId, String timing) throws LinkException;
+    long beginRun(int robotId, Timing timing) throws LinkException;
 
     /**
      * Publishes the robot's progress.
@@ -40,7 +42,7 @@ public interface RobotClock {
      * @param state     RUNNING, FINISHED or STOPPED
      * @throws LinkException when it could not be written
      */
-    void publish(int robotId, long runId, long step, long simTimeMs, String state) throws LinkException;
+    void publish(int robotId, long runId, long step, long simTimeMs, RunState state) throws LinkException;
 
     /**
      * @param robotId the robot

@@ -1,5 +1,7 @@
 package org.proactiverobotics.robot.link;
 
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.sql.Connection;
@@ -170,11 +172,11 @@ class JdbcRobotLinkTest {
     void aNewRunPrunesByItsOwnReadingsOnly(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind); JdbcRobotLink link = new JdbcRobotLink(db.dataSource())) {
             List<DistanceReading> ds = List.of(new DistanceReading(0, 0, 0.3, 1));
-            link.clock().beginRun(1, "sync");
+            link.clock().beginRun(1, Timing.SYNC);
             for (int step = 0; step < 30; step++) {
                 link.answer(1, new SensorAnswer(step * 32L, null, null, ds, null, new long[0]));
             }
-            link.clock().beginRun(1, "sync"); // a second run: its clock starts again from 0
+            link.clock().beginRun(1, Timing.SYNC); // a second run: its clock starts again from 0
             for (int step = 0; step < 8; step++) {
                 link.answer(1, new SensorAnswer(step * 32L, null, null, ds, null, new long[0]));
             }
@@ -239,9 +241,9 @@ class JdbcRobotLinkTest {
             List<String> sent = new java.util.concurrent.CopyOnWriteArrayList<>();
             try (JdbcRobotLink link = new JdbcRobotLink(RecordingDataSource.of(robotPool, sent))) {
                 RobotClock clock = link.clock();
-                long run = clock.beginRun(1, "sync");
+                long run = clock.beginRun(1, Timing.SYNC);
                 link.answer(1, new SensorAnswer(0, new GpsReading(0, 0), null, List.of(), null, new long[0])); // finds out what the server takes
-                clock.publish(1, run, 1, 0, "RUNNING");
+                clock.publish(1, run, 1, 0, RunState.RUNNING);
                 db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'GPS', 1)");
                 long[] ids = link.pendingRequests(1).stream().mapToLong(SensorRequest::id).toArray();
                 sent.clear();
@@ -250,7 +252,7 @@ class JdbcRobotLinkTest {
                     assertThat(sent).as("nothing sent before the step is published").isEmpty();
                     assertThat(one(db, "SELECT COUNT(*) FROM gps_stored_values WHERE sim_time_ms = 32")).containsExactly(0L);
                 }
-                clock.publish(1, run, 2, 32, "RUNNING");
+                clock.publish(1, run, 2, 32, RunState.RUNNING);
                 if (kind == DatabaseKind.MARIADB) {
                     assertThat(sent).as("readings, marks, the step and the commit together").hasSize(1);
                     assertThat(sent.get(0)).startsWith("START TRANSACTION").contains("UPDATE robot_clock").endsWith("COMMIT");
@@ -261,7 +263,7 @@ class JdbcRobotLinkTest {
 
                 link.answer(1, new SensorAnswer(64, new GpsReading(3, 0), null, List.of(), null, new long[0]));
                 db.execute("UPDATE robot_clock SET run_id = run_id + 1 WHERE robot_id = 1"); // another process took the robot id
-                org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 3, 64, "RUNNING"))
+                org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 3, 64, RunState.RUNNING))
                         .isInstanceOf(LinkException.class).hasMessageContaining("another robot process with the same robot id");
             }
         }
@@ -274,20 +276,20 @@ class JdbcRobotLinkTest {
              com.zaxxer.hikari.HikariDataSource robotPool = RobotPool.open(db.jdbcUrl(), db.user(), db.password());
              JdbcRobotLink link = new JdbcRobotLink(robotPool)) {
             RobotClock clock = link.clock();
-            long run = clock.beginRun(1, "sync");
+            long run = clock.beginRun(1, Timing.SYNC);
             link.answer(1, new SensorAnswer(0, new GpsReading(0, 0), null, List.of(), null, new long[0]));
-            clock.publish(1, run, 1, 0, "RUNNING");
+            clock.publish(1, run, 1, 0, RunState.RUNNING);
             link.answer(1, new SensorAnswer(32, new GpsReading(1, 0), new IuReading(0, 0, 0.5), List.of(), null, new long[0]));
             db.execute("RENAME TABLE iudata TO iudata_away"); // the round trip fails at the inertial reading
             try {
-                org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 2, 32, "RUNNING"))
+                org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 2, 32, RunState.RUNNING))
                         .isInstanceOf(LinkException.class);
                 assertThat(one(db, "SELECT COUNT(*) FROM gps_stored_values WHERE sim_time_ms = 32")).as("rolled back").containsExactly(0L);
                 assertThat(one(db, "SELECT step FROM robot_clock WHERE robot_id = 1")).containsExactly(1L);
             } finally {
                 db.execute("RENAME TABLE iudata_away TO iudata");
             }
-            clock.publish(1, run, 2, 32, "RUNNING"); // the retry: the kept answer goes with it
+            clock.publish(1, run, 2, 32, RunState.RUNNING); // the retry: the kept answer goes with it
             assertThat(one(db, "SELECT COUNT(*) FROM gps_stored_values WHERE sim_time_ms = 32")).containsExactly(1L);
             assertThat(one(db, "SELECT yaw_rad FROM iudata WHERE sim_time_ms = 32")).containsExactly(0.5);
             assertThat(one(db, "SELECT step FROM robot_clock WHERE robot_id = 1")).containsExactly(2L);

@@ -98,7 +98,7 @@ public final class ReadRobotCommands extends Rule {
             }
         }
         if (winner == null) {
-            winner = new Suggestion("STOP", DecisionMakingScenario.NAME, ctx.iteration());
+            winner = new Suggestion(org.proactiverobotics.engine.motion.Steering.STOP, DecisionMakingScenario.NAME, ctx.iteration());
         }
         return true;
     }

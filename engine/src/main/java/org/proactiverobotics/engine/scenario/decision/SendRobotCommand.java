@@ -17,7 +17,7 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  */
 public final class SendRobotCommand extends Rule {
 
-    private static final String STOP = "STOP";
+    private static final String STOP = org.proactiverobotics.engine.motion.Steering.STOP;
 
     private String command;
     private String winner;

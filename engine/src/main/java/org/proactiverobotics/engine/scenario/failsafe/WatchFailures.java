@@ -63,7 +63,7 @@ public final class WatchFailures extends Rule {
     public static final String RECORD_PREFIX = FailSafeScenario.NAME + ".";
 
     private static final Logger LOG = LoggerFactory.getLogger(WatchFailures.class);
-    private static final String STOP = "STOP";
+    private static final String STOP = org.proactiverobotics.engine.motion.Steering.STOP;
 
     /** The scenarios in trouble, by name. */
     private TreeMap<String, Episode> episodes = new TreeMap<>();

@@ -1,4 +1,4 @@
-package org.proactiverobotics.robot.link;
+package org.proactiverobotics.protocol;
 
 import java.util.Optional;
 
