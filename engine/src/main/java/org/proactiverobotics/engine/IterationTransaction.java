@@ -43,6 +43,11 @@ public final class IterationTransaction implements DataSource {
         void run() throws SQLException;
     }
 
+    /** MariaDB's and MySQL's deadlock: the server rolled the whole transaction back. */
+    private static final int ER_LOCK_DEADLOCK = 1213;
+    /** MariaDB's and MySQL's lock wait time-out: the statement, or the transaction, rolled back. */
+    private static final int ER_LOCK_WAIT_TIMEOUT = 1205;
+
     private final DataSource pool;
     private final List<Runnable> rollbackListeners = new CopyOnWriteArrayList<>();
     private final List<BeforeCommit> beforeCommit = new CopyOnWriteArrayList<>();
@@ -129,6 +134,7 @@ public final class IterationTransaction implements DataSource {
             try (Statement st = c.createStatement()) {
                 st.execute("START TRANSACTION");
             } catch (SQLException e) {
+                rollbackOnly = true;
                 throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
             }
         }
@@ -166,6 +172,9 @@ public final class IterationTransaction implements DataSource {
             try (PreparedStatement ps = c.prepareStatement(statement)) {
                 binder.bind(ps, 1);
                 return ps.executeUpdate();
+            } catch (SQLException e) {
+                transactionMayBeGone(e);
+                throw e;
             }
         }
         serverTransaction = true; // set first: a failure below still ends in ROLLBACK
@@ -178,6 +187,25 @@ public final class IterationTransaction implements DataSource {
                 return count;
             }
             throw new SQLException("no update count for: " + statement);
+        } catch (SQLException e) {
+            transactionMayBeGone(e);
+            throw e;
+        }
+    }
+
+    /**
+     * A deadlock (1213) rolls the server's whole transaction back, and a lock wait time-out (1205)
+     * may: the iteration can no longer commit whole. It is marked so ({@link #commit()} then fails),
+     * and after a deadlock the next write opens a new transaction, rolled back at the end, so that
+     * no later write of the iteration runs on its own in auto-commit mode.
+     */
+    private void transactionMayBeGone(SQLException e) {
+        int code = e.getErrorCode();
+        if (code == ER_LOCK_DEADLOCK || code == ER_LOCK_WAIT_TIMEOUT) {
+            rollbackOnly = true;
+            if (code == ER_LOCK_DEADLOCK && multiStatements) {
+                serverTransaction = false;
+            }
         }
     }
 
@@ -202,6 +230,14 @@ public final class IterationTransaction implements DataSource {
         rollbackOnly = true;
     }
 
+    private static void abortQuietly(Connection c) {
+        try {
+            c.abort(Runnable::run);
+        } catch (SQLException | RuntimeException ignored) {
+            // already failing: the pool discards a closed connection
+        }
+    }
+
     private static void closeQuietly(Connection c) {
         if (c != null) {
             try {
@@ -213,17 +249,20 @@ public final class IterationTransaction implements DataSource {
     }
 
     /**
-     * Runs the before-commit work, commits the iteration (or rolls it back when a part of it
-     * asked to) and releases the connection.
+     * Runs the before-commit work, commits the iteration and releases the connection; when a part
+     * of it asked for a rollback, rolls it back instead and says so.
      *
-     * @throws SQLException when the before-commit work or the commit fails; the iteration's
-     *         writes are then lost
+     * @throws SQLException when a part asked for a rollback, or the before-commit work or the
+     *         commit fails; nothing of the iteration is then in the database
      */
     public void commit() throws SQLException {
         Connection c = shared;
-        if (c == null || rollbackOnly) {
-            end(false);
+        if (c == null) {
             return;
+        }
+        if (rollbackOnly) {
+            end(false);
+            throw new SQLException("iteration rolled back: a part of it failed its unit of work");
         }
         try {
             for (BeforeCommit work : beforeCommit) {
@@ -264,7 +303,7 @@ public final class IterationTransaction implements DataSource {
                     }
                 }
             } catch (SQLException e) {
-                // the connection is being discarded anyway
+                abortQuietly(c); // perhaps still in a transaction: never back to the pool so
             }
         }
         release(committed);

@@ -52,7 +52,8 @@ class IterationTransactionTest {
             tx.begin();
             insertCommand(tx, "STOP");
             tx.markRollbackOnly(); // as JdbcStateStore does on a failed save
-            tx.commit();
+            org.assertj.core.api.Assertions.assertThatThrownBy(tx::commit).as("the caller learns nothing was committed")
+                    .isInstanceOf(SQLException.class);
             assertThat(db.count("engine_comments")).isZero();
             tx.begin();
             insertCommand(tx, "STOP");

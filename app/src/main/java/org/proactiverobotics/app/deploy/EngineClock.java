@@ -34,9 +34,9 @@ public final class EngineClock {
             return timing == Timing.SYNC;
         }
 
-        /** @return whether the run goes on */
+        /** @return whether the run goes on (in a timing this version knows: else it is not served) */
         public boolean running() {
-            return state == RunState.RUNNING;
+            return state == RunState.RUNNING && timing != null;
         }
 
         /** @return the timing as robot_clock has it, for a log line */

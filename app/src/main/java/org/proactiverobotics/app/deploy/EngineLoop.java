@@ -158,7 +158,7 @@ public final class EngineLoop {
                 pacing.waited(now - idleSince);
                 idlePolls = 0;
                 idleSince = System.nanoTime();
-                LockSupport.parkNanos(pacing.pauseNanos(0, 0)); // every robot ready was just served
+                LockSupport.parkNanos(Math.min(wait, pacing.pauseNanos(0, 0))); // every robot ready was just served
             } else if (wait != Long.MAX_VALUE) { // real time: the next iteration is due at a known time
                 LockSupport.parkNanos(Math.min(wait, 1_000_000));
             } else {

@@ -547,13 +547,9 @@ public final class JdbcRobotTables
      * it): on the running iteration's connection, so that it commits with the iteration or not at all.
      */
     private void update(String what, String sql, Object... params) {
-        Connection inIteration = transaction == null ? null : transaction.connection();
         try {
-            if (inIteration != null) {
-                try (PreparedStatement ps = inIteration.prepareStatement(sql)) {
-                    bind(ps, 1, params);
-                    ps.executeUpdate();
-                }
+            if (buffering()) {
+                transaction.sendNow(sql, params.length, (ps, p) -> bind(ps, p, params));
                 return;
             }
             try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(sql)) {

@@ -118,7 +118,7 @@ public final class JdbcRobotClock implements RobotClock {
         int updated = -1;
         if (link != null) {
             link.dropHandOff(); // the engine may write once it sees this step
-            updated = link.commitAnswerWith(robotId, PUBLISH, 5, binder);
+            updated = link.commitAnswerWith(robotId, runId, step, PUBLISH, 5, binder);
         }
         if (updated < 0) {
             try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(PUBLISH)) {

@@ -61,8 +61,8 @@ public final class JdbcRobotLink implements RobotLink {
     /** The answer kept for the step's publication, or null. */
     private volatile Deferred deferred;
 
-    /** An answer not yet committed, for one robot. */
-    private record Deferred(int robotId, SensorAnswer answer) {
+    /** An answer not yet committed, for one robot, and whether a commit of it failed (its outcome unknown). */
+    private record Deferred(int robotId, SensorAnswer answer, boolean failedBefore) {
     }
 
     /** The newest command and the pending requests as read with an engine tick, for one robot. */
@@ -142,47 +142,70 @@ public final class JdbcRobotLink implements RobotLink {
      * Whether answers wait for the step's publication, to commit with it (the sync clock asks for
      * it: the engine reads the answer only once the step is published).
      */
-    void deferAnswers(boolean defer) {
+    synchronized void deferAnswers(boolean defer) {
         deferAnswers = defer;
-        if (!defer) {
-            deferred = null;
-        }
+        deferred = null; // a run begins: an answer kept from an earlier run is not this run's
     }
 
     /**
      * Commits the answer kept for the step's publication together with it, as one round trip.
      *
      * @param robotId   the robot
+     * @param runId     the run the step is published for
+     * @param step      the step published
      * @param statement the publication (an UPDATE), without a semicolon
      * @param parameters how many '?' it has
      * @param binder    binds them
      * @return the publication's update count, or -1 when no answer was kept (publish alone)
      */
-    int commitAnswerWith(int robotId, String statement, int parameters, Writes.Binder binder) throws LinkException {
+    synchronized int commitAnswerWith(int robotId, long runId, long step, String statement, int parameters,
+                                      Writes.Binder binder) throws LinkException {
         Deferred d = deferred;
         if (d == null || d.robotId() != robotId) {
             return -1;
         }
         return withConnection("writing " + d.answer().readingCount() + " reading(s) and the step", c -> {
+            if (d.failedBefore() && publishedAlready(c, robotId, runId, step)) {
+                deferred = null; // the failed attempt did commit (its answer was lost on the way back): never twice
+                remember(robotId, d.answer());
+                return -1;
+            }
             RoundTrip trip = new RoundTrip();
             write(trip, robotId, d.answer());
             trip.add(statement, parameters, binder);
-            int[] counts = trip.commit(c);
-            deferred = null; // kept until it commits: a failed publication is retried with it
+            int[] counts;
+            try {
+                counts = trip.commit(c);
+            } catch (SQLException e) {
+                deferred = new Deferred(robotId, d.answer(), true); // kept for the retry of the publication
+                throw e;
+            }
+            deferred = null;
             remember(robotId, d.answer());
             return counts[counts.length - 1];
         });
     }
 
+    /** Whether robot_clock already shows this step of this run (a commit whose outcome was not known). */
+    private static boolean publishedAlready(Connection c, int robotId, long runId, long step) throws SQLException {
+        try (PreparedStatement ps = c.prepareStatement("SELECT step FROM robot_clock WHERE robot_id = ? AND run_id = ?")) {
+            ps.setInt(1, robotId);
+            ps.setLong(2, runId);
+            try (ResultSet rs = ps.executeQuery()) {
+                return rs.next() && rs.getLong(1) >= step;
+            }
+        }
+    }
+
     @Override
-    public void answer(int robotId, SensorAnswer answer) throws LinkException {
+    public synchronized void answer(int robotId, SensorAnswer answer) throws LinkException {
         Deferred older = deferred;
         if (older != null) { // never two answers kept: the older commits first
             commitNow(older.robotId(), older.answer());
             deferred = null;
         }
         if (deferAnswers && Boolean.TRUE.equals(multiStatements)) {
-            deferred = new Deferred(robotId, answer); // goes with the step's publication (commitAnswerWith)
+            deferred = new Deferred(robotId, answer, false); // goes with the step's publication (commitAnswerWith)
             return;
         }
         commitNow(robotId, answer);
