@@ -22,8 +22,8 @@ import org.slf4j.LoggerFactory;
  *       and an engine that lost it stops serving the robot at once.</li>
  *   <li>A new robot run (a new robot process) resets the engine's rows and starts the engine
  *       fresh; the run the engine already served (the engine restarted, or another engine
- *       served it before) resumes from the saved state. An iteration saved but not yet
- *       published counts as served, so a kill between the two never runs a step twice.</li>
+ *       served it before) resumes from the saved state. An iteration and its "served step k"
+ *       commit together, so a kill never runs a step twice.</li>
  *   <li>Sync timing: exactly one iteration per robot step; "served step k" commits with it.</li>
  *   <li>Real-time timing: one iteration every period, at a fixed rate, while the run goes on.</li>
  *   <li>A database failure (or an iteration failing to save) is logged once and retried with
@@ -285,7 +285,7 @@ public final class RobotServer {
         if (sameRun && (!firstContact || !options.fresh())) {
             boolean resumed = side.resume();
             long iteration = side.engine().iteration();
-            // An iteration saved but not yet published (killed in between) served the next step.
+            // Saved but not published (rows an older engine left: it published after its commit) served the next step.
             served = last.get().step() + Math.max(0, iteration - last.get().iteration());
             if (iteration != last.get().iteration()) {
                 clock.publish(robot.runId(), served, iteration, lease);
