@@ -172,6 +172,55 @@ class IterationTransactionTest {
         }
     }
 
+    @ParameterizedTest
+    @EnumSource(value = DatabaseKind.class, names = "MARIADB")
+    void anIterationChosenAsADeadlocksVictimCommitsNothingAndNoLaterWriteEscapes(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             com.zaxxer.hikari.HikariDataSource pool = org.proactiverobotics.db.Databases.multiStatementPool(db.jdbcUrl(),
+                     db.user(), db.password());
+             Connection other = db.dataSource().getConnection()) {
+            db.execute("INSERT INTO checkpoints (robot_id, seq, x_m, y_m, radius_m) VALUES (1, 1, 0, 0, 1), (1, 2, 0, 0, 1)");
+            IterationTransaction tx = new IterationTransaction(pool);
+            tx.begin(); // the first finds out what the server takes
+            tx.commit();
+
+            tx.begin();
+            String mark = "UPDATE checkpoints SET reached = TRUE WHERE robot_id = 1 AND seq = ?";
+            tx.sendNow(mark, 1, (ps, p) -> ps.setInt(p, 1)); // opens the transaction, locks checkpoint 1
+            other.setAutoCommit(false);
+            try (java.sql.Statement st = other.createStatement()) {
+                // the other transaction is the heavier one: InnoDB chooses the iteration as the victim
+                for (int k = 0; k < 40; k++) {
+                    st.executeUpdate("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command)"
+                            + " VALUES (2, " + k + ", 0, 'T', 'STOP')");
+                }
+                st.executeUpdate("UPDATE checkpoints SET unreachable = TRUE WHERE robot_id = 1 AND seq = 2");
+            }
+            java.util.concurrent.CompletableFuture<Integer> blocked = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+                try (java.sql.Statement st = other.createStatement()) {
+                    return st.executeUpdate("UPDATE checkpoints SET unreachable = TRUE WHERE robot_id = 1 AND seq = 1");
+                } catch (SQLException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            Thread.sleep(300); // the other transaction now waits for checkpoint 1
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> tx.sendNow(mark, 1, (ps, p) -> ps.setInt(p, 2)))
+                    .isInstanceOf(SQLException.class).extracting(e -> ((SQLException) e).getErrorCode()).isEqualTo(1213);
+            assertThat(blocked.get(10, java.util.concurrent.TimeUnit.SECONDS)).isOne();
+            other.commit();
+
+            insertCommand(tx, "AFTER THE DEADLOCK"); // a later write of the same iteration ...
+            tx.writes().add(INSERT, 1, (ps, p) -> ps.setString(p, "KEPT"));
+            org.assertj.core.api.Assertions.assertThatThrownBy(tx::commit).isInstanceOf(SQLException.class);
+            assertThat(db.count("engine_comments")).as("... is rolled back with it: only the other's 40 rows").isEqualTo(40);
+            try (java.sql.Statement st = other.createStatement();
+                 java.sql.ResultSet rs = st.executeQuery("SELECT COUNT(*) FROM checkpoints WHERE reached = TRUE")) {
+                rs.next();
+                assertThat(rs.getInt(1)).isZero();
+            }
+        }
+    }
+
     private static final String INSERT =
             "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 1, 0, 'T', ?)";
 }
