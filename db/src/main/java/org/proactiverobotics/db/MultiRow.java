@@ -17,6 +17,17 @@ import java.util.List;
  */
 public final class MultiRow {
 
+    /** H2's connection class, or null when H2 is not on the class path (then no connection is H2's). */
+    private static final Class<?> H2_CONNECTION = h2Connection();
+
+    private static Class<?> h2Connection() {
+        try {
+            return Class.forName("org.h2.jdbc.JdbcConnection", false, MultiRow.class.getClassLoader());
+        } catch (ClassNotFoundException e) {
+            return null;
+        }
+    }
+
     /** The most rows one statement carries; {@link #write} sends more as several statements. */
     public static final int MAX_ROWS = 128;
 
@@ -117,16 +128,6 @@ public final class MultiRow {
         return H2_CONNECTION != null && c.isWrapperFor(H2_CONNECTION);
     }
 
-    /** H2's connection class, or null when H2 is not on the class path (then no connection is H2's). */
-    private static final Class<?> H2_CONNECTION = h2Connection();
-
-    private static Class<?> h2Connection() {
-        try {
-            return Class.forName("org.h2.jdbc.JdbcConnection", false, MultiRow.class.getClassLoader());
-        } catch (ClassNotFoundException e) {
-            return null;
-        }
-    }
 
     /**
      * @param h2   whether the statement is for H2

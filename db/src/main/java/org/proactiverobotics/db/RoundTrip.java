@@ -21,29 +21,11 @@ public final class RoundTrip implements Writes {
     /** MariaDB's and MySQL's syntax error: what a server says to multi-statements it does not allow. */
     private static final int ER_PARSE_ERROR = 1064;
 
-    private final boolean opens;
     private final List<String> texts = new ArrayList<>();
     private final List<Binder> binders = new ArrayList<>();
     private final List<Integer> firsts = new ArrayList<>();
     private int parameters;
     private int statements;
-
-    /** A round trip that opens its transaction: {@code START TRANSACTION; ...; COMMIT}. */
-    public RoundTrip() {
-        this(true);
-    }
-
-    private RoundTrip(boolean opens) {
-        this.opens = opens;
-    }
-
-    /**
-     * @return a round trip that ends a transaction already open on the connection (auto-commit
-     *         off, statements run in it before): {@code ...; COMMIT}
-     */
-    public static RoundTrip endingTransaction() {
-        return new RoundTrip(false);
-    }
 
     /**
      * Asks once per connection's pool, not per transaction: a MariaDB or MySQL connection is
@@ -116,12 +98,12 @@ public final class RoundTrip implements Writes {
      *         not known
      */
     public int[] commit(Connection c) throws SQLException {
-        return commit(c, opens);
+        return commit(c, true);
     }
 
     /**
      * {@link #commit(Connection)}, saying whether the round trip opens its transaction (else one
-     * is open on the connection already).
+     * is open on the connection already: {@code ...; COMMIT}).
      *
      * @param c       the connection
      * @param opening whether to send {@code START TRANSACTION} first

@@ -131,8 +131,8 @@ public final class IterationTransaction implements DataSource {
         Connection c = readConnection();
         if (c != null && multiStatements && !serverTransaction) {
             serverTransaction = true; // set first: a failure below still ends in ROLLBACK
-            try (Statement st = c.createStatement()) {
-                st.execute("START TRANSACTION");
+            try {
+                execute(c, "START TRANSACTION");
             } catch (SQLException e) {
                 rollbackOnly = true;
                 throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
@@ -261,22 +261,19 @@ public final class IterationTransaction implements DataSource {
             return;
         }
         if (rollbackOnly) {
-            end(false);
+            rollback();
             throw new SQLException("iteration rolled back: a part of it failed its unit of work");
         }
         try {
             for (BeforeCommit work : beforeCommit) {
                 work.run();
             }
-            RoundTrip trip = deferred;
-            if (trip == null) {
+            if (!multiStatements) {
                 c.commit();
-            } else if (trip.statements() > 0) {
-                trip.commit(c, !serverTransaction); // the writes and COMMIT in one round trip, opening the transaction if need be
+            } else if (deferred.statements() > 0) {
+                deferred.commit(c, !serverTransaction); // the writes and COMMIT in one round trip, opening the transaction if need be
             } else if (serverTransaction) {
-                try (Statement st = c.createStatement()) {
-                    st.execute("COMMIT");
-                }
+                execute(c, "COMMIT");
             }
             serverTransaction = false;
         } catch (SQLException | RuntimeException e) {
@@ -288,30 +285,29 @@ public final class IterationTransaction implements DataSource {
 
     /** Rolls the iteration back and releases the connection. */
     public void rollback() {
-        end(false);
-    }
-
-    private void end(boolean committed) {
         Connection c = shared;
         if (c != null) {
             try {
-                if (deferred == null) {
+                if (!multiStatements) {
                     c.rollback();
                 } else if (serverTransaction) {
-                    try (Statement st = c.createStatement()) {
-                        st.execute("ROLLBACK");
-                    }
+                    execute(c, "ROLLBACK");
                 }
             } catch (SQLException e) {
                 abortQuietly(c); // perhaps still in a transaction: never back to the pool so
             }
         }
-        release(committed);
+        release(false);
+    }
+
+    private static void execute(Connection c, String sql) throws SQLException {
+        try (Statement st = c.createStatement()) {
+            st.execute(sql);
+        }
     }
 
     private void release(boolean committed) {
         Connection c = shared;
-        boolean restoreAutoCommit = deferred == null;
         shared = null;
         deferred = null;
         writes = null;
@@ -321,7 +317,7 @@ public final class IterationTransaction implements DataSource {
             return;
         }
         try {
-            if (restoreAutoCommit) {
+            if (!multiStatements) {
                 c.setAutoCommit(true);
             }
         } catch (SQLException e) {
