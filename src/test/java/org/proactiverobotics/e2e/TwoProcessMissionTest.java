@@ -8,10 +8,13 @@ import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -80,6 +83,17 @@ class TwoProcessMissionTest {
         assertThat(Files.readString(robotLog)).contains("the engine acknowledged run").contains("robot 1: step 500,")
                 .doesNotContain("Exception");
         assertThat(tmp.resolve("robot.beat")).exists();
+        // in sync timing on MariaDB each side waits for the other's step in the server, not by polling
+        long steps = report.get("controlSteps").getAsLong();
+        Matcher robotWaits = Pattern.compile("handshake: (\\d+) steps served, (\\d+) of them seen at the first look")
+                .matcher(Files.readString(robotLog));
+        assertThat(robotWaits.find()).as(Files.readString(robotLog)).isTrue();
+        assertThat(Long.parseLong(robotWaits.group(1))).isEqualTo(steps);
+        assertThat(Long.parseLong(robotWaits.group(2))).as("steps seen served at the robot's first look").isGreaterThan(steps * 9 / 10);
+        Matcher robotTimeOuts = Pattern.compile("handshake: (\\d+) waits on the engine's locks in the database, (\\d+) of them timed out")
+                .matcher(Files.readString(robotLog));
+        assertThat(robotTimeOuts.find()).as(Files.readString(robotLog)).isTrue();
+        assertThat(Long.parseLong(robotTimeOuts.group(2))).as("the robot's waits that timed out (200 ms each)").isLessThanOrEqualTo(5);
         System.out.printf("two-process reference mission (MariaDB, sync): %.1f s wall, robot loop %.1f s%n", wallS,
                 report.get("wallTimeS").getAsDouble());
 
@@ -93,6 +107,11 @@ class TwoProcessMissionTest {
         engine.destroy(); // SIGTERM
         assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
         assertThat(engine.exitValue()).as(Files.readString(engineLog)).isZero();
+        Matcher engineWaits = Pattern.compile("handshake: (\\d+) waits on the robot's locks in the database, (\\d+) of them timed out")
+                .matcher(Files.readString(engineLog));
+        assertThat(engineWaits.find()).as(Files.readString(engineLog)).isTrue();
+        assertThat(Long.parseLong(engineWaits.group(1))).as("the engine's waits in the server").isGreaterThan(steps * 9 / 10);
+        assertThat(Long.parseLong(engineWaits.group(2))).as("the engine's waits that timed out (200 ms each)").isLessThanOrEqualTo(5);
         assertThat(Files.readString(engineLog)).contains("stopped after iteration " + report.get("controlSteps").getAsLong())
                 .contains("engine 1: iteration 500 for robot step 500").doesNotContain("Exception");
         assertThat(deployment.queryLong("SELECT iteration FROM engine_state WHERE robot_id = 1"))
@@ -119,6 +138,99 @@ class TwoProcessMissionTest {
         MissionReport oneProcess = new Mission(new MissionOptions(WorldFiles.load(world),
                 Databases.embeddedH2Url("short_hop_" + System.nanoTime()), "sa", "", "safety-first", 1)).run(runOut);
         assertSameGroundTruth(report, oneProcess);
+    }
+
+    @Test
+    void oneEngineThreadServingTwoRobotsRunsTheirIterationsAsOneBatchAndGivesEachItsOwnRun() throws Exception {
+        Path hop = tmp.resolve("short-hop.json");
+        Files.writeString(hop, SHORT_HOP);
+        Path other = tmp.resolve("other-hop.json");
+        Files.writeString(other, SHORT_HOP.replace("short-hop", "other-hop").replace("{\"x\": 0.0, \"y\": 0.5}",
+                "{\"x\": 0.8, \"y\": 0.6}"));
+        Path engineLog = tmp.resolve("engine.log");
+        Map<String, String> engineOptions = new LinkedHashMap<>();
+        engineOptions.put("--robot-id", null); // the compose service's own robot: replaced by the two
+        engineOptions.put("--robot-ids", "7-8");
+        engineOptions.put("--threads", "1"); // both robots on one thread, so that their tables are read together
+        engineOptions.put("--log-every", "50");
+        Process engine = deployment.start("engine", engineOptions, engineLog);
+        Map<Integer, Process> robots = new LinkedHashMap<>();
+        Map<Integer, Path> worlds = Map.of(7, hop, 8, other);
+        for (int id : worlds.keySet()) {
+            Map<String, String> options = robotOptions(worlds.get(id), String.valueOf(id));
+            options.put("--out", tmp.resolve("out-" + id).toString());
+            options.put("--heartbeat", tmp.resolve("robot-" + id + ".beat").toString());
+            robots.put(id, deployment.start("robot", options, tmp.resolve("robot-" + id + ".log")));
+        }
+        for (int id : robots.keySet()) {
+            assertThat(robots.get(id).waitFor(90, TimeUnit.SECONDS)).as(Files.readString(engineLog)).isTrue();
+            assertThat(robots.get(id).exitValue()).as(Files.readString(tmp.resolve("robot-" + id + ".log"))).isZero();
+        }
+        engine.destroy();
+        assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        String log = Files.readString(engineLog);
+        assertThat(engine.exitValue()).as(log).isZero();
+        Matcher batches = Pattern.compile("robots 7-8: (\\d+) of their \\d+ iterations run in (\\d+) batches").matcher(log);
+        assertThat(batches.find()).as(log).isTrue();
+        assertThat(Long.parseLong(batches.group(2))).as("passes with both robots due").isPositive();
+        assertThat(log).doesNotContain("Exception");
+        for (int id : worlds.keySet()) { // each robot's run is the one it has alone, step for step
+            JsonObject report = JsonParser.parseString(Files.readString(tmp.resolve("out-" + id + "/report.json"))).getAsJsonObject();
+            Path runOut = Files.createDirectories(tmp.resolve("run-" + id));
+            MissionReport oneProcess = new Mission(new MissionOptions(WorldFiles.load(worlds.get(id)),
+                    Databases.embeddedH2Url("hop_" + id + "_" + System.nanoTime()), "sa", "", "safety-first", 1)).run(runOut);
+            assertSameGroundTruth(report, oneProcess);
+        }
+    }
+
+    @Test
+    void aRobotOfABatchLostToAnotherEngineAndTakenBackEndsItsOwnRunAndSoDoesTheOther() throws Exception {
+        Path world = tmp.resolve("long-hop.json");
+        Files.writeString(world, SHORT_HOP.replace("short-hop", "long-hop").replace("\"y\": -1.0", "\"y\": -2.2")
+                .replace("{\"x\": 0.0, \"y\": 0.5}", "{\"x\": 0.0, \"y\": 2.2}"));
+        Path engineLog = tmp.resolve("engine.log");
+        Map<String, String> engineOptions = new LinkedHashMap<>();
+        engineOptions.put("--robot-id", null);
+        engineOptions.put("--robot-ids", "9-10");
+        engineOptions.put("--threads", "1");
+        engineOptions.put("--lease-s", "1");
+        Process engine = deployment.start("engine", engineOptions, engineLog);
+        List<Process> robots = new ArrayList<>();
+        for (int id = 9; id <= 10; id++) {
+            Map<String, String> options = robotOptions(world, String.valueOf(id));
+            options.put("--out", tmp.resolve("out-" + id).toString());
+            options.put("--heartbeat", tmp.resolve("robot-" + id + ".beat").toString());
+            robots.add(deployment.start("robot", options, tmp.resolve("robot-" + id + ".log")));
+        }
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (deployment.queryLong("SELECT COALESCE(MIN(step), 0) FROM engine_clock WHERE robot_id IN (9, 10)") < 60
+                || deployment.queryLong("SELECT COUNT(*) FROM engine_clock WHERE robot_id IN (9, 10)") < 2) {
+            assertThat(System.nanoTime() < deadline).as(Files.readString(engineLog)).isTrue();
+            Thread.sleep(5);
+        }
+        // another engine takes robot 10's lease and lets it lapse at once: the engine's next iteration for
+        // robot 10 fails its lease check (robot 9's before it rolls back too when they ran as one batch,
+        // EngineLoopBatchTest), then the engine takes robot 10 back and resumes it from its saved state
+        deployment.executeAsAdmin("UPDATE engine_lease SET owner = 'thief', epoch = epoch + 1,"
+                + " expires_at = CURRENT_TIMESTAMP(3) WHERE robot_id = 10");
+        for (int id = 9; id <= 10; id++) {
+            Process robot = robots.get(id - 9);
+            assertThat(robot.waitFor(90, TimeUnit.SECONDS)).as(Files.readString(engineLog)).isTrue();
+            assertThat(robot.exitValue()).as(Files.readString(tmp.resolve("robot-" + id + ".log"))).isZero();
+        }
+        engine.destroy();
+        assertThat(engine.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        String log = Files.readString(engineLog);
+        assertThat(engine.exitValue()).as(log).isZero();
+        assertThat(log).contains("robot 10 lost to another engine").contains("lease of robot 10 taken (epoch 3)")
+                .containsPattern("robots 9-10: \\d+ of their \\d+ iterations run in [1-9]\\d* batches").doesNotContain("Exception");
+        MissionReport oneProcess = new Mission(new MissionOptions(WorldFiles.load(world),
+                Databases.embeddedH2Url("long_hop_" + System.nanoTime()), "sa", "", "safety-first", 1))
+                .run(Files.createDirectories(tmp.resolve("run")));
+        for (int id = 9; id <= 10; id++) { // each robot's run is still the one it has alone, step for step
+            JsonObject report = JsonParser.parseString(Files.readString(tmp.resolve("out-" + id + "/report.json"))).getAsJsonObject();
+            assertSameGroundTruth(report, oneProcess);
+        }
     }
 
     @Test

@@ -11,7 +11,7 @@ import java.util.concurrent.Callable;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.app.deploy.ProcessOptions;
-import org.proactiverobotics.app.deploy.EngineClock;
+import org.proactiverobotics.app.deploy.JdbcEngineClock;
 import org.proactiverobotics.app.deploy.EngineLease;
 import org.proactiverobotics.app.deploy.EngineLoop;
 import org.proactiverobotics.app.deploy.RobotIds;
@@ -50,6 +50,8 @@ public final class EngineCommand implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(EngineCommand.class);
     /** The most threads an engine process may be given. */
     private static final int MAX_THREADS = 1000;
+    /** A thread per robot, up to this many by default: a thread blocked on a robot's lock costs no processor. */
+    private static final int DEFAULT_MAX_THREADS = 16;
 
     @Mixin
     private DbOptions db;
@@ -88,8 +90,9 @@ public final class EngineCommand implements Callable<Integer> {
     private String standbyIds;
 
     @Option(names = "--threads", paramLabel = "N", defaultValue = "0",
-            description = "Threads serving the robots (each owns a share of them). Default: the number of robots,"
-                    + " at most twice the number of cores.")
+            description = "Threads serving the robots (each owns a share of them; a thread with one robot waits"
+                    + " for its steps in the database on MariaDB), at most one per robot. Default (0): the number"
+                    + " of robots, at most " + DEFAULT_MAX_THREADS + " or twice the number of cores if more.")
     private int threads;
 
     @Option(names = "--engine-name", paramLabel = "NAME",
@@ -151,9 +154,12 @@ public final class EngineCommand implements Callable<Integer> {
         }
         int[] ids = ids();
         int robots = ids.length + (standbyIds == null ? 0 : RobotIds.parse(standbyIds).length);
-        int threadCount = Math.min(robots, threads > 0 ? threads : 2 * Runtime.getRuntime().availableProcessors());
+        int threadCount = Math.min(robots, threads > 0 ? threads
+                : Math.max(DEFAULT_MAX_THREADS, 2 * Runtime.getRuntime().availableProcessors()));
         HikariConfig config = Databases.allowMultiStatements(Databases.config(db.url(), db.user(), db.password()), db.url());
-        config.setMaximumPoolSize(2 * threadCount + 2); // an iteration's connection and a read beside it, per thread
+        // per thread: an iteration's connection, a read beside it and the handshake's locks (HandshakeLocks)
+        config.setMaximumPoolSize(3 * threadCount + 2);
+        config.setMinimumIdle(threadCount + 2); // the rest opened when used, closed when idle
         try (HikariDataSource pool = new HikariDataSource(config)) {
             String name = engineName != null ? engineName : defaultName();
             long leaseMs = Math.round(leaseS * 1000);
@@ -166,7 +172,7 @@ public final class EngineCommand implements Callable<Integer> {
                     EngineLease lease = new EngineLease(pool, id, name, leaseMs);
                     ScenarioPlugins plugins = choice.plugins();
                     servers.add(new RobotServer(id, robot -> RobotEngine.builder().robotId(robot).database(pool).drive(drive)
-                            .plugins(plugins).guard(lease::confirm).build(), new EngineClock(pool, id), lease, options,
+                            .plugins(plugins).guard(lease::confirm).build(), new JdbcEngineClock(pool, id), lease, options,
                             group == standby, ids.length + standby.length > 1));
                 }
             }

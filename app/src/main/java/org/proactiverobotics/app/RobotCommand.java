@@ -1,6 +1,5 @@
 package org.proactiverobotics.app;
 
-import org.proactiverobotics.protocol.Timing;
 import java.io.IOException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
@@ -13,11 +12,11 @@ import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.deploy.ProcessOptions;
 import org.proactiverobotics.app.deploy.RobotProcess;
-import org.proactiverobotics.app.deploy.StoredMission;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
+import org.proactiverobotics.app.deploy.StoredMission;
 import org.proactiverobotics.app.mission.MissionReport;
-import org.proactiverobotics.robot.Lockstep;
+import org.proactiverobotics.protocol.Timing;
 import org.proactiverobotics.sim2d.WorldSpec;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;

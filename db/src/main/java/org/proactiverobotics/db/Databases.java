@@ -3,6 +3,8 @@ package org.proactiverobotics.db;
 import com.zaxxer.hikari.HikariConfig;
 import com.zaxxer.hikari.HikariDataSource;
 import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * Builds the connection pools both sides use: HikariCP over any JDBC URL (embedded H2 in MySQL
@@ -17,6 +19,9 @@ public final class Databases {
      * nearly every one was parsed again (engine iteration -35 %).
      */
     public static final String H2_MYSQL_MODE = ";MODE=MySQL;DATABASE_TO_LOWER=TRUE;DB_CLOSE_DELAY=-1;QUERY_CACHE_SIZE=256";
+
+    /** The MariaDB driver's session variables in a URL: the key, then its comma-separated assignments. */
+    private static final Pattern SESSION_VARIABLES = Pattern.compile("([?&]sessionVariables=)([^&]*)");
 
     private Databases() {
     }
@@ -60,7 +65,8 @@ public final class Databases {
 
     /**
      * A pool with this project's defaults: small (the workload is one writer per side), fast to
-     * fail when the server is gone (3 s), and named after its user for the logs.
+     * fail when the server is gone (3 s; 30 s for an in-process H2, which has no server to lose and
+     * is only slow on a starved machine), and named after its user for the logs.
      *
      * @param jdbcUrl  a JDBC URL (jdbc:h2:..., jdbc:mariadb://..., jdbc:mysql://...)
      * @param user     the user, or null to take it from the URL
@@ -91,7 +97,8 @@ public final class Databases {
         }
         config.setMaximumPoolSize(4);
         config.setMinimumIdle(1);
-        config.setConnectionTimeout(3_000);
+        // In-process H2 cannot be down: a short time-out would only fail a cold start on a busy machine.
+        config.setConnectionTimeout(jdbcUrl.startsWith("jdbc:h2:mem:") ? 30_000 : 3_000);
         config.setValidationTimeout(1_000);
         // Fail on first use rather than at construction, so callers can wait for a database.
         config.setInitializationFailTimeout(-1);
@@ -104,10 +111,43 @@ public final class Databases {
         // MySQL's rewrites nothing unless asked. A setting in the URL wins.
         if (jdbcUrl.startsWith("jdbc:mariadb:") && !jdbcUrl.contains("useBulkStmts")) {
             config.addDataSourceProperty("useBulkStmts", "true");
-        } else if (jdbcUrl.startsWith("jdbc:mysql:") && !jdbcUrl.contains("rewriteBatchedStatements")) {
+        }
+        // With a list of servers (a Galera cluster), a server that failed once is skipped for this
+        // long: the driver's 60 s default outlasts a cluster's few seconds of stall after a node dies.
+        if (isServerList(jdbcUrl)) {
+            if (!jdbcUrl.contains("deniedListTimeout")) {
+                config.addDataSourceProperty("deniedListTimeout", "1000");
+            }
+            // a Galera node answers reads from what it has applied: wait for the cluster's newest,
+            // so that a process that moved to another node still reads its own commits (set by the
+            // driver on every connection, the ones it makes when it moves too)
+            if (!jdbcUrl.contains("wsrep_sync_wait")) {
+                config.setJdbcUrl(withSessionVariable(config.getJdbcUrl(), "wsrep_sync_wait=1"));
+            }
+        }
+        if (jdbcUrl.startsWith("jdbc:mysql:") && !jdbcUrl.contains("rewriteBatchedStatements")) {
             config.addDataSourceProperty("rewriteBatchedStatements", "true");
         }
         return config;
+    }
+
+    /** The URL with a session variable the driver sets on every connection, added to the URL's own ones. */
+    private static String withSessionVariable(String jdbcUrl, String assignment) {
+        Matcher m = SESSION_VARIABLES.matcher(jdbcUrl);
+        if (m.find()) {
+            String own = m.group(2);
+            return jdbcUrl.substring(0, m.end(2)) + (own.isEmpty() ? "" : ",") + assignment + jdbcUrl.substring(m.end(2));
+        }
+        return jdbcUrl + (jdbcUrl.contains("?") ? "&" : "?") + "sessionVariables=" + assignment;
+    }
+
+    /**
+     * @param jdbcUrl a JDBC URL
+     * @return whether it names a list of MariaDB servers for the driver to fail over between
+     *         ({@code jdbc:mariadb:sequential://a,b,c/db} or {@code loadbalance}), as for a Galera cluster
+     */
+    public static boolean isServerList(String jdbcUrl) {
+        return jdbcUrl.startsWith("jdbc:mariadb:sequential:") || jdbcUrl.startsWith("jdbc:mariadb:loadbalance:");
     }
 
     /**

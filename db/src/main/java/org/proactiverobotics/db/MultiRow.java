@@ -128,7 +128,6 @@ public final class MultiRow {
         return H2_CONNECTION != null && c.isWrapperFor(H2_CONNECTION);
     }
 
-
     /**
      * @param h2   whether the statement is for H2
      * @param rows how many rows, 1 to {@link #MAX_ROWS}

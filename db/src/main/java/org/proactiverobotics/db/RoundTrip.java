@@ -81,6 +81,19 @@ public final class RoundTrip implements Writes {
         }
     }
 
+    /**
+     * Keeps another round trip's statements after these: several transactions' writes sent, and
+     * committed, as one.
+     *
+     * @param other kept statements, not sent
+     */
+    public void addAll(RoundTrip other) {
+        for (int i = 0; i < other.statements; i++) {
+            int next = i + 1 < other.statements ? other.firsts.get(i + 1) : other.parameters + 1;
+            add(other.texts.get(i), next - other.firsts.get(i), other.binders.get(i));
+        }
+    }
+
     /** @return how many statements were added (the transaction's control not counted) */
     public int statements() {
         return statements;

@@ -5,6 +5,9 @@ import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.SQLException;
 import java.sql.SQLFeatureNotSupportedException;
+import java.sql.SQLNonTransientConnectionException;
+import java.sql.SQLRecoverableException;
+import java.sql.SQLTransientConnectionException;
 import java.sql.Statement;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
@@ -29,7 +32,8 @@ import org.proactiverobotics.db.Writes;
  * committed rows either way), the first write that must run at once opens it in the same round
  * trip ({@link #sendNow}), and the writes kept for the commit go with {@code COMMIT}. A caller
  * that takes {@link #connection()} gets the transaction opened first, so nothing it writes can
- * escape it.
+ * escape it. The iterations of several robots that one thread runs one after the other can
+ * commit as one transaction ({@link CommitGroup}).
  */
 public final class IterationTransaction implements DataSource {
 
@@ -45,12 +49,17 @@ public final class IterationTransaction implements DataSource {
 
     /** MariaDB's and MySQL's deadlock: the server rolled the whole transaction back. */
     private static final int ER_LOCK_DEADLOCK = 1213;
+    private static final String START_TRANSACTION = "START TRANSACTION";
+    private static final String ROLLBACK_THEN_START = "ROLLBACK;\nSTART TRANSACTION";
     /** MariaDB's and MySQL's lock wait time-out: the statement, or the transaction, rolled back. */
     private static final int ER_LOCK_WAIT_TIMEOUT = 1205;
 
     private final DataSource pool;
     private final List<Runnable> rollbackListeners = new CopyOnWriteArrayList<>();
     private final List<BeforeCommit> beforeCommit = new CopyOnWriteArrayList<>();
+    private final List<Runnable> commitListeners = new CopyOnWriteArrayList<>();
+    /** The group the next (or the open) iteration commits with, or null: it commits alone. */
+    private CommitGroup group;
     private Connection shared;
     /** Whether the pool's connections take multi-statements (MariaDB, MySQL); null until the first iteration. */
     private Boolean multiStatements;
@@ -58,7 +67,7 @@ public final class IterationTransaction implements DataSource {
     private RoundTrip deferred;
     /** Where the open iteration's writes go: {@link #deferred}, or its connection at once. */
     private Writes writes;
-    /** With multi-statements: whether START TRANSACTION was sent (else the iteration has only read). */
+    /** With multi-statements, outside a group: whether START TRANSACTION was sent (else the iteration has only read). */
     private boolean serverTransaction;
     private Thread owner;
     private boolean rollbackOnly;
@@ -77,6 +86,49 @@ public final class IterationTransaction implements DataSource {
      */
     public void onRollback(Runnable listener) {
         rollbackListeners.add(listener);
+    }
+
+    /**
+     * Registers what to do once an iteration is in the database (housekeeping that must not
+     * wait on the iteration's own locks).
+     *
+     * @param listener run after the commit, on the committing thread
+     */
+    public void onCommit(Runnable listener) {
+        commitListeners.add(listener);
+    }
+
+    /** The next iteration commits with the group's others ({@link CommitGroup#add}). */
+    void join(CommitGroup g) {
+        if (shared != null) {
+            throw new IllegalStateException("an iteration transaction is already open");
+        }
+        group = g;
+    }
+
+    /** The group ended without this transaction's iteration: the next one commits alone. */
+    void leave(CommitGroup g) {
+        if (group == g && shared == null) {
+            group = null;
+        }
+    }
+
+    /** @return whether the pool's connections take multi-statements, or null before the first iteration */
+    Boolean multiStatements() {
+        return multiStatements;
+    }
+
+    /** @return whether START TRANSACTION was sent for the open iteration (in a group: by any of its iterations) */
+    private boolean transactionOpen() {
+        return group != null ? group.serverTransaction() : serverTransaction;
+    }
+
+    private void transactionOpen(boolean open) {
+        if (group != null) {
+            group.serverTransaction(open);
+        } else {
+            serverTransaction = open;
+        }
     }
 
     /**
@@ -101,7 +153,11 @@ public final class IterationTransaction implements DataSource {
         }
         Connection c = null;
         try {
-            c = pool.getConnection();
+            c = group != null ? group.connection() : null;
+            if (c == null) {
+                group = null; // no group, or one that cannot take this iteration: it commits alone
+                c = pool.getConnection();
+            }
             if (multiStatements == null) {
                 multiStatements = RoundTrip.allowed(c);
             }
@@ -109,7 +165,12 @@ public final class IterationTransaction implements DataSource {
                 c.setAutoCommit(false);
             }
         } catch (SQLException e) {
-            closeQuietly(c);
+            if (group == null) {
+                closeQuietly(c);
+            } else {
+                group.fail(); // the group's connection is the group's to end
+                group = null;
+            }
             throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
         }
         shared = c;
@@ -129,10 +190,10 @@ public final class IterationTransaction implements DataSource {
      */
     public Connection connection() {
         Connection c = readConnection();
-        if (c != null && multiStatements && !serverTransaction) {
-            serverTransaction = true; // set first: a failure below still ends in ROLLBACK
+        if (c != null && multiStatements && !transactionOpen()) {
+            transactionOpen(true); // set first: a failure below still ends in ROLLBACK
             try {
-                execute(c, "START TRANSACTION");
+                execute(c, opening());
             } catch (SQLException e) {
                 rollbackOnly = true;
                 throw new StateStoreException("cannot open the iteration's transaction: " + e.getMessage(), e);
@@ -168,7 +229,7 @@ public final class IterationTransaction implements DataSource {
         if (c == null) {
             throw new IllegalStateException("no iteration is open on this thread");
         }
-        if (!multiStatements || serverTransaction) {
+        if (!multiStatements || transactionOpen()) {
             try (PreparedStatement ps = c.prepareStatement(statement)) {
                 binder.bind(ps, 1);
                 return ps.executeUpdate();
@@ -177,10 +238,14 @@ public final class IterationTransaction implements DataSource {
                 throw e;
             }
         }
-        serverTransaction = true; // set first: a failure below still ends in ROLLBACK
-        try (PreparedStatement ps = c.prepareStatement("START TRANSACTION;\n" + statement)) {
+        String opening = opening();
+        transactionOpen(true); // set first: a failure below still ends in ROLLBACK
+        try (PreparedStatement ps = c.prepareStatement(opening + ";\n" + statement)) {
             binder.bind(ps, 1);
-            ps.execute(); // START TRANSACTION's result, then the statement's
+            ps.execute(); // the opening's results, then the statement's
+            if (!opening.equals(START_TRANSACTION)) {
+                ps.getMoreResults(); // ROLLBACK's
+            }
             if (!ps.getMoreResults() && ps.getUpdateCount() >= 0) {
                 int count = ps.getUpdateCount();
                 ps.getMoreResults(); // no more: drained, so that an error is seen
@@ -194,19 +259,58 @@ public final class IterationTransaction implements DataSource {
     }
 
     /**
-     * A deadlock (1213) rolls the server's whole transaction back, and a lock wait time-out (1205)
-     * may: the iteration can no longer commit whole. It is marked so ({@link #commit()} then fails),
-     * and after a deadlock the next write opens a new transaction, rolled back at the end, so that
-     * no later write of the iteration runs on its own in auto-commit mode.
+     * @return what opens the iteration's server transaction: after a failure, a ROLLBACK first, since
+     *         START TRANSACTION alone would commit what a connection wrongly taken for lost still holds
+     */
+    private String opening() {
+        return rollbackOnly ? ROLLBACK_THEN_START : START_TRANSACTION;
+    }
+
+    /**
+     * A statement on the open iteration's connection failed (a read too): when the failure means the
+     * server's transaction is gone, nothing of the iteration may commit. Call it from the thread
+     * running the iteration; elsewhere it does nothing.
+     *
+     * @param e what the statement threw
+     */
+    public void statementFailed(SQLException e) {
+        if (readConnection() != null) {
+            transactionMayBeGone(e);
+        }
+    }
+
+    /**
+     * A deadlock (1213; a certification conflict on Galera too) rolls the server's whole transaction
+     * back, a lock wait time-out (1205) may, and so does a lost connection, which a failover driver
+     * (jdbc:mariadb:sequential://a,b,c) replaces under the same Connection with one to another
+     * server: the iteration can no longer commit whole. It is marked so ({@link #commit()} then
+     * fails), and the next write opens a new transaction, rolled back at the end, so that no later
+     * write of the iteration runs on its own in auto-commit mode.
      */
     private void transactionMayBeGone(SQLException e) {
         int code = e.getErrorCode();
-        if (code == ER_LOCK_DEADLOCK || code == ER_LOCK_WAIT_TIMEOUT) {
+        boolean lost = connectionLost(e);
+        if (code == ER_LOCK_DEADLOCK || code == ER_LOCK_WAIT_TIMEOUT || lost) {
             rollbackOnly = true;
-            if (code == ER_LOCK_DEADLOCK && multiStatements) {
-                serverTransaction = false;
+            if ((code == ER_LOCK_DEADLOCK || lost) && multiStatements) {
+                transactionOpen(false);
             }
         }
+    }
+
+    /** @return whether e (or a cause) says the connection to the server was lost or replaced */
+    static boolean connectionLost(SQLException e) {
+        for (Throwable t = e; t != null; t = t.getCause() == t ? null : t.getCause()) {
+            if (t instanceof SQLTransientConnectionException || t instanceof SQLNonTransientConnectionException
+                    || t instanceof SQLRecoverableException) {
+                return true;
+            }
+            if (t instanceof SQLException s && s.getSQLState() != null
+                    && (s.getSQLState().startsWith("08") || s.getSQLState().equals("25S03"))) {
+                return true; // 08: connection exception; 25S03: MariaDB's driver reconnected, transaction lost
+            }
+        }
+        return false;
     }
 
     /**
@@ -250,7 +354,9 @@ public final class IterationTransaction implements DataSource {
 
     /**
      * Runs the before-commit work, commits the iteration and releases the connection; when a part
-     * of it asked for a rollback, rolls it back instead and says so.
+     * of it asked for a rollback, rolls it back instead and says so. In a {@link CommitGroup} it only
+     * hands the iteration's writes to the group: the group's commit commits it (and runs the
+     * {@link #onCommit} listeners) or rolls it back.
      *
      * @throws SQLException when a part asked for a rollback, or the before-commit work or the
      *         commit fails; nothing of the iteration is then in the database
@@ -268,14 +374,21 @@ public final class IterationTransaction implements DataSource {
             for (BeforeCommit work : beforeCommit) {
                 work.run();
             }
+            if (rollbackOnly) { // a part failed meanwhile (a deadlock the work did not rethrow): the iteration is not whole
+                throw new SQLException("iteration rolled back: a part of it failed its unit of work");
+            }
+            if (group != null) { // committed with the group's others, or rolled back with them (groupEnded)
+                group.stage(this, deferred);
+                owner = null; // done: its tables no longer buffer or read on the group's connection
+                return;
+            }
             if (!multiStatements) {
                 c.commit();
             } else if (deferred.statements() > 0) {
-                deferred.commit(c, !serverTransaction); // the writes and COMMIT in one round trip, opening the transaction if need be
-            } else if (serverTransaction) {
+                deferred.commit(c, !transactionOpen()); // the writes and COMMIT in one round trip, opening the transaction if need be
+            } else if (transactionOpen()) {
                 execute(c, "COMMIT");
             }
-            serverTransaction = false;
         } catch (SQLException | RuntimeException e) {
             rollback();
             throw e;
@@ -283,14 +396,23 @@ public final class IterationTransaction implements DataSource {
         release(true);
     }
 
-    /** Rolls the iteration back and releases the connection. */
+    /**
+     * Rolls the iteration back and releases the connection. In a group: the iterations staged
+     * before it roll back with it at the group's end (its statements may be in their transaction),
+     * and those after it commit alone.
+     */
     public void rollback() {
         Connection c = shared;
+        if (group != null) {
+            group.fail();
+            release(false);
+            return;
+        }
         if (c != null) {
             try {
                 if (!multiStatements) {
                     c.rollback();
-                } else if (serverTransaction) {
+                } else if (transactionOpen()) {
                     execute(c, "ROLLBACK");
                 }
             } catch (SQLException e) {
@@ -298,6 +420,11 @@ public final class IterationTransaction implements DataSource {
             }
         }
         release(false);
+    }
+
+    /** The group this iteration was staged in committed, or rolled back. */
+    void groupEnded(boolean committed) {
+        release(committed);
     }
 
     private static void execute(Connection c, String sql) throws SQLException {
@@ -308,23 +435,29 @@ public final class IterationTransaction implements DataSource {
 
     private void release(boolean committed) {
         Connection c = shared;
+        boolean grouped = group != null;
         shared = null;
         deferred = null;
         writes = null;
         owner = null;
         serverTransaction = false;
+        group = null;
         if (c == null) {
             return;
         }
         try {
-            if (!multiStatements) {
+            if (!multiStatements && !grouped) {
                 c.setAutoCommit(true);
             }
         } catch (SQLException e) {
             // closed below; the pool discards a broken connection
         } finally {
-            closeQuietly(c);
-            if (!committed) {
+            if (!grouped) {
+                closeQuietly(c); // a group gives its connection back itself
+            }
+            if (committed) {
+                commitListeners.forEach(Runnable::run);
+            } else {
                 rollbackListeners.forEach(Runnable::run);
             }
         }

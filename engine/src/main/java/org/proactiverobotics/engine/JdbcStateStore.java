@@ -13,6 +13,7 @@ import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
+import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Writes;
 
 /**
@@ -170,6 +171,7 @@ public final class JdbcStateStore implements StateStore {
                 transaction.markRollbackOnly();
                 savedRows.remove(robotId);
                 if (e instanceof SQLException sql) {
+                    transaction.statementFailed(sql); // a lost connection: no later write of the iteration may run bare
                     throw new StateStoreException("could not save the engine state of robot_id=" + robotId
                             + " after iteration " + iteration + ": " + sql.getMessage(), sql);
                 }
@@ -281,12 +283,7 @@ public final class JdbcStateStore implements StateStore {
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
             try {
-                for (String table : new String[] {"engine_queue", "engine_state", "rule_failures"}) {
-                    try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ?")) {
-                        ps.setInt(1, robotId);
-                        ps.executeUpdate();
-                    }
-                }
+                RobotRows.delete(c, robotId, List.of("engine_queue", "engine_state", "rule_failures"));
                 c.commit();
             } catch (SQLException | RuntimeException e) {
                 c.rollback();

@@ -221,6 +221,65 @@ class IterationTransactionTest {
         }
     }
 
+    /**
+     * A failover URL (as for a Galera cluster) lets the driver replace a lost connection under the
+     * same Connection with a new one, in auto-commit: after the loss, nothing of the iteration may
+     * commit, neither what it wrote before nor what it writes after. The URL names the test server
+     * twice, so that the driver reconnects to it.
+     */
+    @ParameterizedTest
+    @EnumSource(value = DatabaseKind.class, names = "MARIADB")
+    void anIterationWhoseConnectionAFailoverDriverReplacedCommitsNothing(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("jdbc:mariadb://([^/?]+)(/.*)").matcher(db.jdbcUrl());
+            assertThat(m.matches()).as(db.jdbcUrl()).isTrue();
+            String failover = "jdbc:mariadb:sequential://" + m.group(1) + "," + m.group(1) + m.group(2);
+            try (com.zaxxer.hikari.HikariDataSource pool = org.proactiverobotics.db.Databases.multiStatementPool(failover,
+                    db.user(), db.password()); Connection admin = db.dataSource().getConnection()) {
+                IterationTransaction tx = new IterationTransaction(pool);
+                tx.begin(); // the first finds out what the server takes
+                tx.commit();
+
+                tx.begin();
+                insertCommand(tx, "BEFORE THE LOSS");
+                long id;
+                try (java.sql.Statement st = tx.readConnection().createStatement();
+                     java.sql.ResultSet rs = st.executeQuery("SELECT CONNECTION_ID()")) {
+                    rs.next();
+                    id = rs.getLong(1);
+                }
+                try (java.sql.Statement st = admin.createStatement()) {
+                    st.execute("KILL CONNECTION " + id);
+                }
+                SQLException lost = org.assertj.core.api.Assertions.catchThrowableOfType(SQLException.class, () -> {
+                    try (java.sql.Statement st = tx.readConnection().createStatement()) {
+                        st.executeQuery("SELECT COUNT(*) FROM engine_comments").close();
+                    }
+                });
+                assertThat((Object) lost).as("the driver reports the reconnection").isNotNull();
+                tx.statementFailed(lost); // as the engine's tables do with every failed statement
+                insertCommand(tx, "AFTER THE LOSS"); // runs: the driver is connected again
+                tx.writes().add(INSERT, 1, (ps, p) -> ps.setString(p, "KEPT"));
+                org.assertj.core.api.Assertions.assertThatThrownBy(tx::commit).isInstanceOf(SQLException.class);
+                assertThat(db.count("engine_comments")).as("nothing of the iteration, before or after the loss").isZero();
+
+                tx.begin(); // and the next iteration runs as usual
+                insertCommand(tx, "NEXT");
+                tx.commit();
+                assertThat(db.count("engine_comments")).isOne();
+
+                // a connection error the server sent without dropping the connection (Galera's 1047,
+                // 08S01, on a node not ready yet): the reopened transaction must not commit what it held
+                tx.begin();
+                insertCommand(tx, "HELD");
+                tx.statementFailed(new SQLException("WSREP has not yet prepared node for application use", "08S01", 1047));
+                insertCommand(tx, "AFTER THE ERROR");
+                org.assertj.core.api.Assertions.assertThatThrownBy(tx::commit).isInstanceOf(SQLException.class);
+                assertThat(db.count("engine_comments")).as("neither the held write nor the later one").isOne();
+            }
+        }
+    }
+
     private static final String INSERT =
             "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 1, 0, 'T', ?)";
 }

@@ -48,6 +48,10 @@ public final class Lockstep implements StepGate {
     private long lastStep;
     private long lastSimTimeMs;
     private long publishFailures;
+    /** Steps served in sync timing, the looks at engine_clock they took, and those seen at the first look after a wait in the server. */
+    private long servedSteps;
+    private long looks;
+    private long wokenInServer;
 
     /**
      * @param clock         the handshake tables
@@ -110,6 +114,10 @@ public final class Lockstep implements StepGate {
         if (runId < 0) {
             return;
         }
+        if (servedSteps > 0) {
+            LOG.info("robot {}: handshake: {} steps served, {} of them seen at the first look after waiting in the database;"
+                    + " {} looks at engine_clock in all", robotId, servedSteps, wokenInServer, looks);
+        }
         try {
             clock.publish(robotId, runId, lastStep, lastSimTimeMs, state);
             lastTick = clock.engineTick(robotId).orElse(lastTick);
@@ -129,7 +137,8 @@ public final class Lockstep implements StepGate {
     }
 
     /**
-     * Polls engine_clock until the engine serves this run up to the step, first about when the
+     * Waits until the engine serves this run up to the step: in the server when the clock can
+     * ({@link RobotClock#waitsInServer}), else polling engine_clock, first about when the
      * iteration is due ({@link PollPacing}), then closely; false when stopped.
      */
     private boolean awaitEngine(long step, String what) {
@@ -137,10 +146,15 @@ public final class Lockstep implements StepGate {
         long nextStatus = start + FIRST_STATUS_NANOS;
         boolean reported = false;
         int polls = 0;
-        LockSupport.parkNanos(pacing.pauseNanos(0, 0)); // the engine's iteration has only just been asked for
+        boolean inServer = step > 0 && clock.waitsInServer();
+        if (!inServer) {
+            LockSupport.parkNanos(pacing.pauseNanos(0, 0)); // the engine's iteration has only just been asked for
+        }
         while (true) {
             polls++;
-            Optional<EngineTick> tick = retry("reading engine_clock", () -> clock.engineTick(robotId));
+            long callStart = System.nanoTime();
+            Optional<EngineTick> tick = retry("reading engine_clock",
+                    () -> inServer ? clock.awaitServed(robotId, step) : clock.engineTick(robotId));
             if (tick == null) {
                 return false;
             }
@@ -148,6 +162,11 @@ public final class Lockstep implements StepGate {
                 lastTick = tick.get();
                 if (step > 0) {
                     pacing.waited(System.nanoTime() - start);
+                    servedSteps++;
+                    looks += polls;
+                    if (inServer && polls == 1) {
+                        wokenInServer++;
+                    }
                 }
                 if (reported || step == 0) {
                     LOG.info("robot {}: the engine {} (after {} s)", robotId, step == 0 ? "acknowledged run " + runId
@@ -167,7 +186,10 @@ public final class Lockstep implements StepGate {
                                 : "it last served run " + t.runId()).orElse("no engine has served this robot yet"),
                         String.format(Locale.ROOT, "%.0f", (now - start) / 1e9));
             }
-            LockSupport.parkNanos(pacing.pauseNanos(now - start, polls));
+            long pause = pacing.pauseNanos(now - start, polls);
+            if (!inServer || now - callStart < pause) { // a wait in the server that lasted longer is the pause
+                LockSupport.parkNanos(pause);
+            }
         }
     }
 

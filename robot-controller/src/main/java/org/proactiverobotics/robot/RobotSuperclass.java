@@ -99,8 +99,8 @@ public abstract class RobotSuperclass implements AutoCloseable {
      * @return the simulated time at the end, ms
      */
     public long run(StepGate gate) {
-        LOG.info("robot {}: running (time step {} ms, real-time factor {})", config.robotId(),
-                simulation.timeStepMs(), config.realTimeFactor());
+        LOG.info("robot {}: running (time step {} ms, {})", config.robotId(), simulation.timeStepMs(),
+                config.realTimeFactor() > 0 ? "real-time factor " + config.realTimeFactor() : "unpaced: as fast as it goes");
         long startNanos = System.nanoTime();
         long startSimMs = simulation.simTimeMs();
         long step = 0;

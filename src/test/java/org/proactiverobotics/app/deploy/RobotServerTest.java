@@ -26,7 +26,7 @@ class RobotServerTest {
         EngineLease lease = new EngineLease(ds, robot, "engine-test", 5_000);
         EngineLoop.Options options = new EngineLoop.Options(Strategy.named("safety-first"), false, 32, 500, 5_000);
         return new RobotServer(robot, id -> RobotEngine.builder().robotId(id).database(ds).guard(lease::confirm).build(),
-                new EngineClock(ds, robot), lease, options, false, setAsideOnCorrupt);
+                new JdbcEngineClock(ds, robot), lease, options, false, setAsideOnCorrupt);
     }
 
     @Test

@@ -21,8 +21,11 @@ public final class DbOptions {
     /** The environment variable a password defaults to. */
     public static final String PASSWORD_VARIABLE = "PROACTIVE_DB_PASSWORD";
 
-    /** A MariaDB or MySQL URL: the server part, the database name, the parameters. */
-    private static final Pattern SERVER_URL = Pattern.compile("(jdbc:(?:mariadb|mysql)://[^/?]+)(?:/([^?]*))?(\\?.*)?");
+    /**
+     * A MariaDB or MySQL URL: the server part (one host, or a list with the drivers' failover modes,
+     * e.g. jdbc:mariadb:sequential://a:3306,b:3306), the database name, the parameters.
+     */
+    private static final Pattern SERVER_URL = Pattern.compile("(jdbc:(?:mariadb|mysql)(?::[a-z-]+)?://[^/?]+)(?:/([^?]*))?(\\?.*)?");
 
     @Option(names = "--db", paramLabel = "JDBC_URL", required = true,
             description = "The shared database, e.g. jdbc:mysql://mysql:3306/proactive or jdbc:mariadb://127.0.0.1:3306/proactive.")

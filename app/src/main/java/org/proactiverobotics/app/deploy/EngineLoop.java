@@ -12,8 +12,11 @@ import java.util.function.BooleanSupplier;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.deploy.EngineClock.RobotTick;
 import org.proactiverobotics.db.Backoff;
+import org.proactiverobotics.db.HandshakeLocks;
 import org.proactiverobotics.db.PollPacing;
 import org.proactiverobotics.engine.CorruptStateException;
+import org.proactiverobotics.engine.robot.IterationBatch;
+import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.Strategy;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -23,7 +26,11 @@ import org.slf4j.LoggerFactory;
  * stopped, on a few threads, each thread owning a fixed share of the robots (robot k of the list
  * on thread k mod threads). A thread reads the clocks of all its robots in one query per pass,
  * turns each, and polls again about when the next step is due ({@link PollPacing}: a step costs
- * a few round trips, not sleeps), more slowly when no robot is stepping.
+ * a few round trips, not sleeps), more slowly when no robot is stepping. A thread with one robot
+ * in sync timing on MariaDB waits for its next step in the server instead ({@link HandshakeLocks}),
+ * and polls only when that wait ends without the step. When several robots of a thread are due
+ * in a pass, their engines' tables are read in one query before their iterations and the
+ * iterations commit as one transaction after ({@link IterationBatch}).
  */
 public final class EngineLoop {
 
@@ -40,6 +47,8 @@ public final class EngineLoop {
     private static final Logger LOG = LoggerFactory.getLogger(EngineLoop.class);
     /** How often a thread of an engine serving several robots names those that have not started a run. */
     private static final long WAITING_EVERY_NANOS = TimeUnit.SECONDS.toNanos(30);
+    /** The longest wait in the server for a robot's step: the loop looks at its stop flag and heartbeat this often. */
+    static final long LOCK_WAIT_NANOS = TimeUnit.MILLISECONDS.toNanos(200);
 
     private final DataSource dataSource;
     private final List<RobotServer> servers;
@@ -102,6 +111,39 @@ public final class EngineLoop {
 
     private void turnAll(List<RobotServer> share, BooleanSupplier done, Heartbeat beat,
                          AtomicReference<RuntimeException> fatal) {
+        // a thread of one robot can block on its locks; one of several robots polls them all at once
+        HandshakeLocks locks = share.size() == 1 ? new HandshakeLocks(dataSource, share.get(0).robotId()) : null;
+        try {
+            turnAllLogged(share, done, beat, fatal, locks);
+        } finally {
+            if (locks != null) {
+                if (locks.waits() > 0) {
+                    LOG.info("engine {}: handshake: {} waits on the robot's locks in the database, {} of them timed out",
+                            share.get(0).robotId(), locks.waits(), locks.count(HandshakeLocks.Wake.TIMED_OUT));
+                }
+                locks.close();
+            }
+        }
+    }
+
+    /** {@link #turnUntilDone}, then one line on the batches the share ran. */
+    private void turnAllLogged(List<RobotServer> share, BooleanSupplier done, Heartbeat beat,
+                               AtomicReference<RuntimeException> fatal, HandshakeLocks locks) {
+        BatchTally tally = new BatchTally();
+        try {
+            turnUntilDone(share, done, beat, fatal, locks, tally);
+        } finally {
+            if (tally.batches > 0) {
+                LOG.info("engine: robots {}: {} of their {} iterations run in {} batches (several robots due at once: their"
+                        + " tables read in one query, their iterations committed as one; the others ran alone)",
+                        RobotIds.format(share.stream().mapToInt(RobotServer::robotId).toArray()), tally.iterations, tally.all,
+                        tally.batches);
+            }
+        }
+    }
+
+    private void turnUntilDone(List<RobotServer> share, BooleanSupplier done, Heartbeat beat,
+                               AtomicReference<RuntimeException> fatal, HandshakeLocks locks, BatchTally tally) {
         int[] ids = share.stream().mapToInt(RobotServer::robotId).toArray();
         int idlePolls = 0;
         long idleSince = System.nanoTime();
@@ -114,8 +156,21 @@ public final class EngineLoop {
                 beat.beat();
             }
             Map<Integer, RobotTick> ticks;
+            boolean inServer = false;
             try {
-                ticks = EngineClock.robots(dataSource, ids);
+                long awaited = locks == null ? -1 : share.get(0).awaitedStep();
+                inServer = awaited >= 0 && locks.usable() && !locks.paused();
+                if (inServer) { // "served step k" given (the iteration is committed), "sensed step k + 1" awaited
+                    ticks = locks.exchange(HandshakeLocks.served(awaited - 1), HandshakeLocks.sensed(awaited), LOCK_WAIT_NANOS,
+                            JdbcEngineClock.ROBOT_CLOCK, (ps, p) -> ps.setInt(p, ids[0]), JdbcEngineClock::ticks);
+                    RobotTick tick = ticks.get(ids[0]);
+                    locks.found(tick != null && tick.step() >= awaited);
+                } else {
+                    if (locks != null) {
+                        locks.close(); // not waiting for the robot in the server: no lock or connection kept for it
+                    }
+                    ticks = JdbcEngineClock.robots(dataSource, ids);
+                }
                 if (failures > 0) {
                     LOG.info("engine: database back after {} failed attempt(s)", failures);
                     failures = 0;
@@ -142,28 +197,115 @@ public final class EngineLoop {
             }
             boolean worked = false;
             long wait = Long.MAX_VALUE;
+            Batch batch = share.size() > 1 ? batch(share, ticks, now) : null;
             try {
                 for (RobotServer s : share) {
-                    worked |= s.turn(ticks.get(s.robotId()), now);
+                    boolean iterated = s.turn(ticks.get(s.robotId()), now);
+                    worked |= iterated;
+                    tally.all += iterated ? 1 : 0;
                     long w = s.realTimeWaitNanos();
                     if (w > 0) {
                         wait = Math.min(wait, w);
+                    }
+                    if (batch != null && s == batch.last()) {
+                        batch.commit(tally); // at once: the others' turns do not hold its locks
                     }
                 }
             } catch (RuntimeException e) {
                 fatal.compareAndSet(null, e); // a saved state that cannot be read: the command stops and says which
                 return;
+            } finally {
+                if (batch != null) {
+                    batch.iterations.close(); // rolls back what did not commit; a snapshot not taken up is never used later
+                }
             }
             if (worked) {
                 pacing.waited(now - idleSince);
                 idlePolls = 0;
                 idleSince = System.nanoTime();
-                LockSupport.parkNanos(Math.min(wait, pacing.pauseNanos(0, 0))); // every robot ready was just served
+                if (!(inServer && share.get(0).awaitedStep() >= 0)) { // the next step is waited for in the server
+                    LockSupport.parkNanos(Math.min(wait, pacing.pauseNanos(0, 0))); // every robot ready was just served
+                }
+            } else if (inServer && locks.lastWake() == HandshakeLocks.Wake.TIMED_OUT) {
+                idlePolls++; // the robot still holds the lock: wait in the server again
             } else if (wait != Long.MAX_VALUE) { // real time: the next iteration is due at a known time
                 LockSupport.parkNanos(Math.min(wait, 1_000_000));
             } else {
                 LockSupport.parkNanos(pacing.pauseNanos(System.nanoTime() - idleSince, ++idlePolls));
             }
+        }
+    }
+
+    /** How many batches a thread ran, how many iterations were in them and in all, for its last log line. */
+    private static final class BatchTally {
+        long batches;
+        long iterations;
+        long all;
+        /** Whether the last batch did not commit (its failure is said once, until one commits again). */
+        boolean failing;
+    }
+
+    /** The iterations of a pass that run as one batch, and the robots they are for. */
+    private record Batch(IterationBatch iterations, List<RobotServer> due) {
+
+        /** @return the last robot of the share whose iteration is in the batch */
+        RobotServer last() {
+            return due.get(due.size() - 1);
+        }
+
+        /**
+         * Commits the pass's iterations; those that did not commit (the commit failed, or an
+         * iteration of the batch did) are taken up again from their saved state, alone.
+         */
+        void commit(BatchTally tally) {
+            try {
+                iterations.commit();
+                tally.batches++;
+                tally.iterations += due.size();
+                tally.failing = false;
+            } catch (SQLException | RuntimeException e) {
+                List<RobotEngine> gone = iterations.rolledBack();
+                List<RobotServer> rolledBack = due.stream().filter(s -> gone.contains(s.engine())).toList();
+                rolledBack.forEach(s -> s.batchRolledBack(e));
+                if (!tally.failing && !rolledBack.isEmpty()) { // none rolled back: the failed iteration said so itself
+                    tally.failing = true;
+                    LOG.warn("engine: robots {}: their iterations run as one batch did not commit ({}); each resumes from its"
+                            + " saved state", RobotIds.format(rolledBack.stream().mapToInt(RobotServer::robotId).toArray()),
+                            RobotServer.oneLine(e));
+                }
+            }
+        }
+    }
+
+    /**
+     * When several robots of the share have an iteration due in this pass, reads their tables in
+     * one query and makes their iterations one transaction ({@link IterationBatch}).
+     *
+     * @return the batch, or null: each iteration reads and commits its own
+     */
+    private Batch batch(List<RobotServer> share, Map<Integer, RobotTick> ticks, long now) {
+        List<RobotEngine> engines = new ArrayList<>(share.size());
+        List<RobotServer> due = new ArrayList<>(share.size());
+        for (RobotServer s : share) {
+            RobotEngine engine = s.due(ticks.get(s.robotId()), now);
+            if (engine != null) {
+                engines.add(engine);
+                due.add(s);
+            }
+        }
+        if (engines.size() < 2) {
+            return null; // one robot reads and commits its own, as it would have
+        }
+        try {
+            IterationBatch iterations = IterationBatch.start(dataSource, engines);
+            if (!iterations.batched()) {
+                iterations.close();
+                return null;
+            }
+            return new Batch(iterations, due);
+        } catch (SQLException | RuntimeException e) {
+            LOG.debug("engine: reading ahead failed ({}); each iteration reads its own", RobotServer.oneLine(e));
+            return null;
         }
     }
 

@@ -66,7 +66,7 @@ public final class RobotIds {
     }
 
     private static String problem(String spec, String part) {
-        return "--robot-ids: '" + part + "' in '" + spec + "' is not a robot id (>= 0) or a range FROM-TO"
-                + " (e.g. 1-100 or 1,3,7-9)";
+        return "--robot-ids: '" + part + "' in '" + spec + "' is not a robot id (>= 0) or a range FROM-TO with"
+                + " FROM <= TO (e.g. 1-100 or 1,3,7-9)";
     }
 }

@@ -1,7 +1,5 @@
 package org.proactiverobotics.app.deploy;
 
-import org.proactiverobotics.protocol.RunState;
-import org.proactiverobotics.protocol.Timing;
 import com.zaxxer.hikari.HikariDataSource;
 import java.io.IOException;
 import java.nio.file.Path;
@@ -19,8 +17,10 @@ import org.proactiverobotics.app.replay.ReplayPage;
 import org.proactiverobotics.app.replay.RobotTracer;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.ScenarioPlugins;
-import org.proactiverobotics.robot.LoopTimes;
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
 import org.proactiverobotics.robot.Lockstep;
+import org.proactiverobotics.robot.LoopTimes;
 import org.proactiverobotics.robot.Missions;
 import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.robot.RobotConfig;

@@ -51,6 +51,7 @@ public final class RobotServer {
     /** The robot's run and whether it ran, as last seen, and since when (System.nanoTime()): a standby's wait, a drop's. */
     private long seenRunId = -1;
     private boolean seenRunning;
+    private boolean seenSync;
     private long seenSinceNanos;
     /** Whether the engine serves several robots (a corrupt saved state then sets this one aside). */
     private final boolean oneOfSeveral;
@@ -108,6 +109,34 @@ public final class RobotServer {
         return lease.held();
     }
 
+    /**
+     * @return the robot step this engine waits for, the one after the last it served, while it
+     *         serves a running robot in sync timing; -1 otherwise (nothing to wait for in the server)
+     */
+    long awaitedStep() {
+        return lease.held() && runId != -1 && !setAside && seenSync && seenRunning ? served + 1 : -1;
+    }
+
+    /**
+     * @param seen the robot's clock as read for this turn (null: no run started)
+     * @param now  System.nanoTime() of this turn
+     * @return the robot's engine when this turn will run an iteration of the run it serves
+     *         already (so that it can run in a batch with other robots'), else null; null too while
+     *         its iterations fail (it runs alone until one succeeds, and never rolls back others)
+     */
+    RobotEngine due(RobotTick seen, long now) {
+        if (seen == null || side == null || setAside || runId == -1 || seen.runId() != runId || !seen.running()
+                || !lease.held() || !backoff.ready() || backoff.failing()) {
+            return null;
+        }
+        return (seen.sync() ? seen.step() > served : now - nextTickNanos >= 0) ? side : null;
+    }
+
+    /** @return the robot's engine, or null before this engine first took the robot's lease */
+    RobotEngine engine() {
+        return side;
+    }
+
     /** @return how long until a real-time iteration is due, ns (0: none is waited for) */
     long realTimeWaitNanos() {
         long w = realTimeWaitNanos;
@@ -161,6 +190,7 @@ public final class RobotServer {
             renewWhileIdle(now);
             return false;
         }
+        seenSync = robot.sync();
         if (robot.runId() != seenRunId || robot.running() != seenRunning) {
             seenRunId = robot.runId();
             seenRunning = robot.running();
@@ -335,6 +365,17 @@ public final class RobotServer {
             LOG.debug("engine {}: still failing ({})", robotId, oneLine(e));
         }
         // the lease is kept: the next iteration's confirmation tells whether another engine took it meanwhile
+    }
+
+    /**
+     * The iteration this robot ran in a batch did not commit (the batch's commit failed, or
+     * another iteration of it did): as a failed iteration, it is taken up again from the saved
+     * state after a back-off, alone.
+     *
+     * @param e why the batch did not commit
+     */
+    void batchRolledBack(Exception e) {
+        failed(e);
     }
 
     /** The database failed before this robot's turn: its run is taken up again from the saved state. */

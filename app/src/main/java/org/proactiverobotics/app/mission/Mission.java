@@ -4,7 +4,6 @@ import com.zaxxer.hikari.HikariDataSource;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.sql.Connection;
-import java.sql.PreparedStatement;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
@@ -20,6 +19,7 @@ import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.ReplayPage;
 import org.proactiverobotics.app.replay.SeenReadings;
 import org.proactiverobotics.db.Databases;
+import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.CommandArray;
 import org.proactiverobotics.engine.IterationSummary;
@@ -237,12 +237,7 @@ public final class Mission {
     /** A mission starts from a clean slate for its robot: earlier rows of the same robot id go. */
     private static void clearRobotRows(HikariDataSource pool, int robotId) throws SQLException {
         try (Connection c = pool.getConnection()) {
-            for (String table : Schema.tableNames()) {
-                try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ?")) {
-                    ps.setInt(1, robotId);
-                    ps.executeUpdate();
-                }
-            }
+            RobotRows.delete(c, robotId, Schema.tableNames());
         }
     }
 }

@@ -76,12 +76,8 @@ public final class LiveMission {
     public int poll() throws SQLException {
         try (Connection c = pool.getConnection()) {
             c.setReadOnly(true);
-            if (mission == null) {
-                mission = readMission(c);
-                if (mission == null) {
-                    return 0; // no checkpoints or no scan yet: nothing is drawn before the robot is known
-                }
-                data = new ReplayData(Map.of(), rays);
+            if (mission == null && !startOver(c)) {
+                return 0; // no checkpoints or no scan yet: nothing is drawn before the robot is known
             }
             Map<String, Integer> priorities = new LinkedHashMap<>();
             Map<String, Integer> strategySlots = new LinkedHashMap<>();
@@ -115,11 +111,9 @@ public final class LiveMission {
             if (ids.get(0)[1] <= data.lastIteration()) { // a new run of the robot: start over
                 reportedCheckpoints.clear();
                 data = new ReplayData(Map.of(), 0);
-                mission = readMission(c);
-                if (mission == null) {
+                if (!startOver(c)) {
                     return 0;
                 }
-                data = new ReplayData(Map.of(), rays);
             }
             long from = ids.get(0)[2] - READINGS_BEFORE_MS;
             long to = ids.get(ids.size() - 1)[2];
@@ -166,6 +160,16 @@ public final class LiveMission {
             lastCommandId = ids.get(ids.size() - 1)[0];
             return ids.size();
         }
+    }
+
+    /** Reads the robot's mission and starts its steps over; false while it has not seeded it or sent a scan. */
+    private boolean startOver(Connection c) throws SQLException {
+        mission = readMission(c);
+        if (mission == null) {
+            return false;
+        }
+        data = new ReplayData(Map.of(), rays);
+        return true;
     }
 
     private static double[] at(TreeMap<Long, double[]> readings, long t) {

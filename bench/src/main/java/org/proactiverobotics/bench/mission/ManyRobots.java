@@ -10,6 +10,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import javax.sql.DataSource;
 import org.proactiverobotics.bench.engine.Workload;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.engine.Algorithm;
@@ -41,7 +42,10 @@ import org.proactiverobotics.engine.Algorithm;
  * </pre>
  * Options: {@code --robots auto|N,N,...} (auto: double N from {@code --start N} (1) while the robots keep
  * up, then bisect),
- * {@code --threads T|per-robot} (1), {@code --link jdbc|direct} (jdbc), {@code --db URL} (embedded H2, a
+ * {@code --threads T|per-robot} (1), {@code --link jdbc|direct} (jdbc), {@code --batches on|off} (on: a
+ * thread's engines run their iterations as one batch, their tables read in one query and their
+ * transactions committed as one, as an engine process serving several robots on a thread does, on a
+ * database server; off: each reads and commits its own), {@code --db URL} (embedded H2, a
  * fresh in-memory database per N), {@code --user U --password P}, {@code --warmup-s S} (5),
  * {@code --measure-s S} (30), {@code --step-ms MS} (32).
  */
@@ -54,9 +58,9 @@ public final class ManyRobots {
         Workload.quietLogs();
         Map<String, String> opt = LongRun.Args.parse(args);
         Config cfg = new Config(opt);
-        System.out.printf(Locale.ROOT, "ManyRobots link=%s db=%s threads=%s warmup=%ds measure=%ds step=%dms load=%s%n",
-                cfg.direct ? "direct" : "jdbc", cfg.direct ? "-" : LongRun.Args.kind(cfg.url(1)), cfg.threads > 0 ? String.valueOf(cfg.threads) : "per-robot", cfg.warmupS,
-                cfg.measureS, cfg.stepMs, LongRun.Args.load());
+        System.out.printf(Locale.ROOT, "ManyRobots link=%s db=%s threads=%s batches=%s warmup=%ds measure=%ds step=%dms load=%s%n",
+                cfg.direct ? "direct" : "jdbc", cfg.direct ? "-" : LongRun.Args.kind(cfg.url(1)), cfg.threads > 0 ? String.valueOf(cfg.threads) : "per-robot",
+                cfg.batches ? "on" : "off", cfg.warmupS, cfg.measureS, cfg.stepMs, LongRun.Args.load());
         System.out.println("| robots | rounds | round mean ms | p50 | p95 | p99 | max | ms / robot-step (engine / robot / physics) | keeps up | laps | collisions | load |");
         System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|");
         String robots = opt.getOrDefault("robots", "auto");
@@ -102,13 +106,19 @@ public final class ManyRobots {
                 rigs.add(cfg.direct ? Rig.direct(Worlds.forRobot(i), i + 1, Algorithm.LAZY)
                         : Rig.jdbc(Worlds.forRobot(i), i + 1, enginePool, cfg.url(n), cfg.user, cfg.password));
             }
-            List<Callable<Void>> groups = new ArrayList<>();
+            List<List<Rig>> shares = new ArrayList<>();
             for (int t = 0; t < threads; t++) {
-                int first = t;
+                List<Rig> share = new ArrayList<>();
+                for (int i = t; i < rigs.size(); i += threads) {
+                    share.add(rigs.get(i));
+                }
+                shares.add(share);
+            }
+            DataSource batchPool = cfg.batches ? enginePool : null;
+            List<Callable<Void>> groups = new ArrayList<>();
+            for (List<Rig> share : shares) {
                 groups.add(() -> {
-                    for (int i = first; i < rigs.size(); i += threads) {
-                        rigs.get(i).step();
-                    }
+                    stepShare(share, batchPool);
                     return null;
                 });
             }
@@ -134,9 +144,7 @@ public final class ManyRobots {
                 }
                 long t0 = System.nanoTime();
                 if (pool == null) {
-                    for (Rig rig : rigs) {
-                        rig.step();
-                    }
+                    stepShare(rigs, batchPool);
                 } else {
                     for (Future<Void> f : pool.invokeAll(groups)) {
                         f.get();
@@ -193,6 +201,17 @@ public final class ManyRobots {
         }
     }
 
+    /** One step of each robot of a thread's share: the engines' iterations as one batch, or each on its own. */
+    private static void stepShare(List<Rig> share, DataSource batchPool) {
+        if (batchPool != null && share.size() > 1) {
+            Rig.stepAll(share, batchPool);
+        } else {
+            for (Rig rig : share) {
+                rig.step();
+            }
+        }
+    }
+
     private static double pct(long[] sorted, double p) {
         return sorted[Math.min(sorted.length - 1, (int) (sorted.length * p))] / 1e6;
     }
@@ -206,6 +225,7 @@ public final class ManyRobots {
         final int warmupS;
         final int measureS;
         final int stepMs;
+        final boolean batches;
 
         Config(Map<String, String> opt) {
             direct = opt.getOrDefault("link", "jdbc").equals("direct");
@@ -218,6 +238,7 @@ public final class ManyRobots {
             warmupS = Integer.parseInt(opt.getOrDefault("warmup-s", "5"));
             measureS = Integer.parseInt(opt.getOrDefault("measure-s", "30"));
             stepMs = Integer.parseInt(opt.getOrDefault("step-ms", "32"));
+            batches = !direct && !opt.getOrDefault("batches", "on").equals("off");
         }
 
         /** The database of a run of n robots: the given one, or a fresh in-memory H2 per n. */

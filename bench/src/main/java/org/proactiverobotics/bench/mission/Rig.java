@@ -5,21 +5,22 @@ import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.OptionalDouble;
-import java.util.function.Supplier;
 import java.util.function.UnaryOperator;
 import javax.sql.DataSource;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
+import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.Algorithm;
-import org.proactiverobotics.engine.IterationSummary;
 import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.robot.IterationBatch;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.engine.tables.Checkpoint;
@@ -52,7 +53,8 @@ final class Rig implements AutoCloseable {
     final WorldSpec world;
     final Simulation sim;
     private final ProactiveController controller;
-    private final Supplier<IterationSummary> iterate;
+    /** The engine side, for a snapshot read ahead with other robots' ({@link #stepAll}). */
+    private final RobotEngine engine;
     private final DataSource rearmPool;
     private final Laps laps;
     private final AutoCloseable owned;
@@ -66,12 +68,12 @@ final class Rig implements AutoCloseable {
     String lastFailure;
 
     private Rig(int robotId, WorldSpec world, Simulation sim, ProactiveController controller,
-                Supplier<IterationSummary> iterate, DataSource rearmPool, Laps laps, AutoCloseable owned) {
+                RobotEngine engine, DataSource rearmPool, Laps laps, AutoCloseable owned) {
         this.robotId = robotId;
+        this.engine = engine;
         this.world = world;
         this.sim = sim;
         this.controller = controller;
-        this.iterate = iterate;
         this.rearmPool = rearmPool;
         this.laps = laps;
         this.owned = owned;
@@ -102,7 +104,7 @@ final class Rig implements AutoCloseable {
         Simulation sim = new Simulation(world);
         var robotPool = RobotPool.open(jdbcUrl, user, password);
         ProactiveController controller = new ProactiveController(sim, new JdbcRobotLink(robotPool), RobotConfig.defaults(robotId));
-        return new Rig(robotId, world, sim, controller, engine::iterate, enginePool, null, robotPool);
+        return new Rig(robotId, world, sim, controller, engine, enginePool, null, robotPool);
     }
 
     /** A robot over an in-process link of its own (no database, the engine's state not saved). */
@@ -114,7 +116,7 @@ final class Rig implements AutoCloseable {
         RobotEngine engine = start(RobotEngine.builder().tables(wired, StateStore.none()), world, robotId, algorithm);
         Simulation sim = new Simulation(world);
         ProactiveController controller = new ProactiveController(sim, link, RobotConfig.defaults(robotId));
-        return new Rig(robotId, world, sim, controller, engine::iterate, null, laps, null);
+        return new Rig(robotId, world, sim, controller, engine, null, laps, null);
     }
 
     /** The production wiring, started fresh with the default strategy, as Mission starts it. */
@@ -133,12 +135,7 @@ final class Rig implements AutoCloseable {
     private static void prepare(DataSource pool, int robotId) throws SQLException {
         Schema.apply(pool);
         try (Connection c = pool.getConnection()) {
-            for (String table : Schema.tableNames()) {
-                try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ?")) {
-                    ps.setInt(1, robotId);
-                    ps.executeUpdate();
-                }
-            }
+            RobotRows.delete(c, robotId, Schema.tableNames());
         }
     }
 
@@ -148,7 +145,7 @@ final class Rig implements AutoCloseable {
         controller.sense();
         long t1 = System.nanoTime();
         try {
-            iterate.get();
+            engine.iterate();
         } catch (RuntimeException e) {
             failedIterations++;
             lastFailure = e.getMessage();
@@ -163,6 +160,68 @@ final class Rig implements AutoCloseable {
         physicsNs += t4 - t3;
         steps++;
         return t4 - t0;
+    }
+
+    /**
+     * One control step of each robot of a group, as an engine process serving them all runs it:
+     * every robot senses, the engines' iterations run as one {@link IterationBatch} (their tables
+     * read in one query, their transactions committed as one), every robot acts and its physics
+     * steps. Each robot's step is the same as {@link #step()}'s (the robots share nothing but the
+     * database); the batch's read and commit are shared out among the engines' times.
+     *
+     * @param rigs       the group
+     * @param enginePool the engines' database
+     */
+    static void stepAll(List<Rig> rigs, DataSource enginePool) {
+        List<RobotEngine> engines = new ArrayList<>(rigs.size());
+        for (Rig rig : rigs) {
+            long t0 = System.nanoTime();
+            rig.controller.sense();
+            rig.robotNs += System.nanoTime() - t0;
+            engines.add(rig.engine);
+        }
+        long t0 = System.nanoTime();
+        IterationBatch batch = null;
+        try {
+            batch = IterationBatch.start(enginePool, engines);
+        } catch (SQLException e) {
+            rigs.get(0).lastFailure = "read ahead: " + e.getMessage(); // each iteration reads and commits its own
+        }
+        long shared = System.nanoTime() - t0;
+        for (Rig rig : rigs) {
+            long t1 = System.nanoTime();
+            try {
+                rig.engine.iterate();
+            } catch (RuntimeException e) {
+                rig.failedIterations++;
+                rig.lastFailure = e.getMessage();
+            }
+            rig.engineNs += System.nanoTime() - t1;
+        }
+        if (batch != null) {
+            long t2 = System.nanoTime();
+            try {
+                batch.commit();
+            } catch (SQLException e) {
+                for (RobotEngine rolledBack : batch.rolledBack()) { // those whose iteration threw counted it already
+                    rigs.get(engines.indexOf(rolledBack)).failedIterations++;
+                }
+                rigs.get(0).lastFailure = "batch commit: " + e.getMessage();
+            } finally {
+                batch.close();
+            }
+            shared += System.nanoTime() - t2;
+        }
+        for (Rig rig : rigs) {
+            rig.engineNs += shared / rigs.size();
+            long t2 = System.nanoTime();
+            rig.controller.act();
+            long t3 = System.nanoTime();
+            rig.sim.step();
+            rig.robotNs += t3 - t2;
+            rig.physicsNs += System.nanoTime() - t3;
+            rig.steps++;
+        }
     }
 
     /** Zeroes the per-part times and the step count. */

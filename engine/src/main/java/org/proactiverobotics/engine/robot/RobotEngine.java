@@ -1,5 +1,6 @@
 package org.proactiverobotics.engine.robot;
 
+import java.sql.Connection;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -13,6 +14,7 @@ import java.util.function.UnaryOperator;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.Writes;
 import org.proactiverobotics.engine.Algorithm;
+import org.proactiverobotics.engine.CommitGroup;
 import org.proactiverobotics.engine.IterationListener;
 import org.proactiverobotics.engine.IterationSummary;
 import org.proactiverobotics.engine.IterationTransaction;
@@ -94,12 +96,16 @@ public final class RobotEngine {
     private final ProactiveEngine engine;
     private final EngineTables tables;
     private final IterationTransaction transaction;
+    /** The tables over the database, or null (tables given): what a snapshot is read ahead into. */
+    private final JdbcRobotTables jdbcTables;
     private final ScenarioRegistry registry;
     private final List<String> order;
     /** The map as the rules know it: read again from the rows after a start or a resume. */
     private final KnownMap knownMap;
     /** An iteration ran in memory but its transaction did not commit. */
     private boolean aheadOfDatabase;
+    /** The committing iteration's number calls for pruning the history once it is in the database. */
+    private boolean pruneDue;
     /** What the running iteration commits besides its own writes, or null. */
     private WithCommit withCommit;
 
@@ -115,7 +121,8 @@ public final class RobotEngine {
     }
 
     private RobotEngine(ProactiveEngine engine, EngineTables tables, IterationTransaction transaction,
-                        ScenarioRegistry registry, List<String> order, KnownMap knownMap) {
+                        JdbcRobotTables jdbcTables, ScenarioRegistry registry, List<String> order, KnownMap knownMap) {
+        this.jdbcTables = jdbcTables;
         this.knownMap = knownMap;
         this.engine = engine;
         this.tables = tables;
@@ -123,6 +130,14 @@ public final class RobotEngine {
         this.registry = registry;
         this.order = order;
         if (transaction != null) {
+            // also when the group it committed with rolls back after the iteration returned (CommitGroup)
+            transaction.onRollback(() -> aheadOfDatabase = true);
+            transaction.onCommit(() -> { // after the commit: pruning must not wait on the iteration's own row locks
+                if (pruneDue) {
+                    pruneDue = false;
+                    prune();
+                }
+            });
             transaction.beforeCommit(() -> {
                 if (withCommit != null) {
                     withCommit.write(transaction.writes(), engine.iteration());
@@ -189,7 +204,8 @@ public final class RobotEngine {
     /**
      * Runs one iteration (state saved at its end) and, every {@value #PRUNE_EVERY} iterations,
      * prunes the engine's history. Over a database, all of it is one transaction: the rules'
-     * writes and the saved state commit together or not at all.
+     * writes and the saved state commit together or not at all (in an {@link IterationBatch}, with
+     * the batch's commit: until then the iteration is not in the database).
      *
      * @return the iteration's summary
      * @throws StateStoreException when the state (or the iteration's transaction) cannot be
@@ -220,6 +236,9 @@ public final class RobotEngine {
         IterationSummary summary;
         if (transaction == null) {
             summary = engine.runIteration();
+            if (engine.iteration() % PRUNE_EVERY == 0) {
+                prune();
+            }
         } else {
             if (aheadOfDatabase) {
                 resume(); // the last iteration ran in memory but never committed: the database is the truth
@@ -228,22 +247,65 @@ public final class RobotEngine {
             transaction.begin();
             try {
                 summary = engine.runIteration();
+                pruneDue = engine.iteration() % PRUNE_EVERY == 0; // done once committed (onCommit)
                 transaction.commit();
             } catch (SQLException e) {
-                transaction.rollback();
-                aheadOfDatabase = true;
+                transaction.rollback(); // its listener marks the engine ahead of the database
                 throw new StateStoreException("committing iteration " + engine.iteration() + " of robot "
                         + engine.robotId() + ": " + e.getMessage(), e);
             } catch (RuntimeException e) {
                 transaction.rollback();
-                aheadOfDatabase = true;
                 throw e;
             }
         }
-        if (engine.iteration() % PRUNE_EVERY == 0) {
-            prune();
-        }
         return summary;
+    }
+
+    /**
+     * Reads the next iteration's tables of several robots' engines in one query, for an engine
+     * process that runs their iterations one after the other ({@link IterationBatch}): each then
+     * takes up its snapshot at its first read instead of reading its own. Only for robots whose
+     * rows nothing but the robot writes until their iteration (see {@link JdbcRobotTables#readAhead});
+     * call {@link #dropReadAhead()} on each after their iterations. Engines given tables instead of
+     * a database are left out, and nothing is read ahead on H2.
+     *
+     * @param dataSource the database the engines were built over
+     * @param engines    the engines whose iteration comes next
+     * @return whether their snapshots were read (not on H2)
+     * @throws SQLException when the read fails (nothing is kept: each iteration reads its own)
+     */
+    static boolean readAhead(DataSource dataSource, List<RobotEngine> engines) throws SQLException {
+        List<JdbcRobotTables> tables = new ArrayList<>(engines.size());
+        for (RobotEngine e : engines) {
+            if (e.jdbcTables != null) {
+                tables.add(e.jdbcTables);
+            }
+        }
+        if (tables.isEmpty()) {
+            return false;
+        }
+        try (Connection c = dataSource.getConnection()) {
+            return JdbcRobotTables.readAhead(c, tables);
+        }
+    }
+
+    /** Forgets a snapshot read ahead ({@link #readAhead}) that this engine's iteration did not take up. */
+    void dropReadAhead() {
+        if (jdbcTables != null) {
+            jdbcTables.dropReadAhead();
+        }
+    }
+
+    /** @return the iterations' transaction, or null (tables given instead of a database) */
+    IterationTransaction transaction() {
+        return transaction;
+    }
+
+    /** The next iteration commits with the group's others (over a database; else it has nothing to commit). */
+    void join(CommitGroup group) {
+        if (transaction != null) {
+            group.add(transaction);
+        }
     }
 
     /** Housekeeping after the iteration, in its own transactions: a failure here costs the iteration nothing. */
@@ -451,6 +513,7 @@ public final class RobotEngine {
         public RobotEngine build() {
             IterationTransaction transaction = null;
             EngineTables base = tables;
+            JdbcRobotTables jdbcTables = null;
             StateStore stateStore = store;
             StateCodec codec = new StateCodec(plugins.classLoader());
             long[] iteration = {0}; // the guard is told the iteration about to commit
@@ -462,7 +525,8 @@ public final class RobotEngine {
                     // in the transaction, so that the check's row lock holds until the iteration commits
                     tx.beforeCommit(() -> check.check(tx.connection(), iteration[0]));
                 }
-                base = EngineTables.of(new JdbcRobotTables(transaction, robotId));
+                jdbcTables = new JdbcRobotTables(transaction, robotId);
+                base = EngineTables.of(jdbcTables);
                 stateStore = new JdbcStateStore(transaction, codec);
             } else if (base == null) {
                 throw new IllegalStateException("give the engine a database or tables");
@@ -521,7 +585,7 @@ public final class RobotEngine {
                     }
                 });
             }
-            return new RobotEngine(b.build(), wired, transaction, registry, List.copyOf(order), knownMap);
+            return new RobotEngine(b.build(), wired, transaction, jdbcTables, registry, List.copyOf(order), knownMap);
         }
     }
 }

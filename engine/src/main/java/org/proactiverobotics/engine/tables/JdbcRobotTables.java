@@ -20,8 +20,8 @@ import org.proactiverobotics.engine.IterationTransaction;
  * every read goes through a {@code robot_id} index.
  *
  * <p>Over an {@link IterationTransaction}, during an iteration, the rules' reads are served from
- * an {@link IterationSnapshot} read in one query the first time a rule reads, the rules'
- * requests and marks are kept and sent as batches on the iteration's connection just before it
+ * an {@link IterationSnapshot} read in one query the first time a rule reads (or before the
+ * iteration, with other robots' snapshots: {@link #readAhead}), the rules' requests and marks are kept and sent as batches on the iteration's connection just before it
  * commits, and the iteration's command goes on that connection at once: a constant, small number of round trips per iteration whatever the
  * rules ask. Outside an iteration every call is its own statement, as before.
  */
@@ -33,6 +33,8 @@ public final class JdbcRobotTables
     /** The iteration's transaction when the data source is one, else null (no snapshot, no buffering). */
     private final IterationTransaction transaction;
     private IterationSnapshot snapshot;
+    /** The next iteration's snapshot, read ahead with other robots' ({@link #readAhead}), or null. */
+    private IterationSnapshot readAhead;
     private List<Object[]> pendingRequests = new ArrayList<>();
     private List<Object[]> pendingMarks = new ArrayList<>();
     private long snapshotLoads;
@@ -72,14 +74,55 @@ public final class JdbcRobotTables
         }
         long iteration = transaction.iterationNumber();
         if (snapshot == null || snapshot.iteration != iteration) {
+            if (readAhead != null) { // the iteration's first read: take up what was read ahead for it
+                snapshot = readAhead;
+                snapshot.iteration = iteration;
+                readAhead = null;
+                snapshotLoads++;
+                return snapshot;
+            }
             try {
                 snapshot = IterationSnapshot.load(c, robotId, iteration);
                 snapshotLoads++;
             } catch (SQLException e) {
-                throw new TablesException("reading the tables of robot " + robotId + " for the iteration", e);
+                throw failure("reading the tables of robot " + robotId + " for the iteration", e);
             }
         }
         return snapshot;
+    }
+
+    /**
+     * Reads the snapshot of each robot's next iteration ahead, for several robots in one query,
+     * where each would otherwise read its own at its iteration's first read: for an engine that
+     * runs several robots' iterations one after the other. Only where nothing but the robot
+     * writes its rows until that iteration (a robot waiting in lockstep, or real-time timing,
+     * which reads one moment of the robot's writes anyway); {@link #dropReadAhead} after the
+     * iterations, so that a snapshot not taken up is never used later.
+     *
+     * @param c      a connection (outside any iteration's transaction)
+     * @param tables the robots' tables, over one database
+     * @return whether they were read: not on H2 (in-process, or a server of its own), where the
+     *         several robots' query ran slower than their own ones (ManyRobots)
+     * @throws SQLException when the query fails (nothing is kept: each iteration then reads its own)
+     */
+    public static boolean readAhead(Connection c, List<JdbcRobotTables> tables) throws SQLException {
+        if (MultiRow.isH2(c)) {
+            return false;
+        }
+        int[] ids = new int[tables.size()];
+        for (int i = 0; i < ids.length; i++) {
+            ids[i] = tables.get(i).robotId;
+        }
+        IterationSnapshot[] read = IterationSnapshot.loadAll(c, ids);
+        for (int i = 0; i < ids.length; i++) {
+            tables.get(i).readAhead = read[i];
+        }
+        return true;
+    }
+
+    /** Forgets a snapshot read ahead that no iteration took up. */
+    public void dropReadAhead() {
+        readAhead = null;
     }
 
     /** @return whether a write is kept for the iteration's commit (an iteration is open on this thread) */
@@ -178,7 +221,7 @@ public final class JdbcRobotTables
                         Arrays.copyOf(distances, n), range));
             }
         } catch (SQLException e) {
-            throw new TablesException("reading the newest distance-sensor reading of robot " + robotId, e);
+            throw failure("reading the newest distance-sensor reading of robot " + robotId, e);
         }
     }
 
@@ -233,7 +276,7 @@ public final class JdbcRobotTables
                 return false;
             }
         } catch (SQLException e) {
-            throw new TablesException("reading the pending " + sensor + " request of robot " + robotId, e);
+            throw failure("reading the pending " + sensor + " request of robot " + robotId, e);
         }
     }
 
@@ -322,7 +365,7 @@ public final class JdbcRobotTables
                 }
             }
         } catch (SQLException e) {
-            throw new TablesException("writing " + chunks.size() + " occupancy-map chunk(s) of robot " + robotId, e);
+            throw failure("writing " + chunks.size() + " occupancy-map chunk(s) of robot " + robotId, e);
         }
     }
 
@@ -387,9 +430,10 @@ public final class JdbcRobotTables
                 writePending(Writes.atOnce(inIteration)); // the iteration's writes so far go first
                 writeStrategy(inIteration, entries);
                 snapshot = null; // read again, with the new strategy, by the next read
+                readAhead = null; // read before the write: never taken up after it
             } catch (SQLException e) {
                 transaction.markRollbackOnly();
-                throw new TablesException("writing the strategy of robot " + robotId, e);
+                throw failure("writing the strategy of robot " + robotId, e);
             }
             return;
         }
@@ -406,7 +450,7 @@ public final class JdbcRobotTables
                 c.setAutoCommit(autoCommit);
             }
         } catch (SQLException e) {
-            throw new TablesException("writing the strategy of robot " + robotId, e);
+            throw failure("writing the strategy of robot " + robotId, e);
         }
     }
 
@@ -439,7 +483,7 @@ public final class JdbcRobotTables
                 transaction.sendNow(INSERT_COMMAND, 5, (ps, p) -> bind(ps, p, new Object[] {robotId, iteration, simTimeMs,
                         scenario, command}));
             } catch (SQLException e) {
-                throw new TablesException("sending command '" + command + "' for robot " + robotId, e);
+                throw failure("sending command '" + command + "' for robot " + robotId, e);
             }
             return;
         }
@@ -462,7 +506,7 @@ public final class JdbcRobotTables
             deleted += pruneOlderThanNewest(c, "rule_failures", "", keepRows);
             deleted += pruneOlderThanNewest(c, "sensor_requests", " AND answered_sim_time_ms IS NOT NULL", keepRows);
         } catch (SQLException e) {
-            throw new TablesException("pruning the engine history of robot " + robotId, e);
+            throw failure("pruning the engine history of robot " + robotId, e);
         }
         return deleted;
     }
@@ -488,6 +532,14 @@ public final class JdbcRobotTables
     }
 
     // ---- plumbing ----
+
+    /** A failed statement: the iteration learns of it (a lost connection must not commit half of it), the caller gets why. */
+    private TablesException failure(String what, SQLException e) {
+        if (transaction != null) {
+            transaction.statementFailed(e);
+        }
+        return new TablesException(what, e);
+    }
 
     private interface RowMapper<T> {
         T map(ResultSet rs) throws SQLException;
@@ -538,7 +590,7 @@ public final class JdbcRobotTables
                 return query.run(ps);
             }
         } catch (SQLException e) {
-            throw new TablesException("reading the " + what + " of robot " + robotId, e);
+            throw failure("reading the " + what + " of robot " + robotId, e);
         }
     }
 
@@ -557,7 +609,7 @@ public final class JdbcRobotTables
                 ps.executeUpdate();
             }
         } catch (SQLException e) {
-            throw new TablesException(what + " for robot " + robotId, e);
+            throw failure(what + " for robot " + robotId, e);
         }
     }
 

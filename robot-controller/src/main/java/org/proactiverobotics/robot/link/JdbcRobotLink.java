@@ -60,6 +60,8 @@ public final class JdbcRobotLink implements RobotLink {
     private volatile boolean deferAnswers;
     /** The answer kept for the step's publication, or null. */
     private volatile Deferred deferred;
+    /** The robot's clock, made on the first {@link #clock()} (its handshake locks are let go of by {@link #close()}). */
+    private JdbcRobotClock clock;
 
     /** An answer not yet committed, for one robot, and whether a commit of it failed (its outcome unknown). */
     private record Deferred(int robotId, SensorAnswer answer, boolean failedBefore) {
@@ -98,8 +100,11 @@ public final class JdbcRobotLink implements RobotLink {
      *
      * @return the robot's clock, sharing reads with this link
      */
-    public JdbcRobotClock clock() {
-        return new JdbcRobotClock(dataSource, this);
+    public synchronized JdbcRobotClock clock() {
+        if (clock == null) {
+            clock = new JdbcRobotClock(dataSource, this);
+        }
+        return clock;
     }
 
     /** Keeps what was read with the engine's tick for the next reads (see {@link #clock()}). */
@@ -435,7 +440,13 @@ public final class JdbcRobotLink implements RobotLink {
 
     @Override
     public void close() {
-        // Nothing held between calls; the pool belongs to whoever gave it.
+        JdbcRobotClock c;
+        synchronized (this) {
+            c = clock;
+        }
+        if (c != null) {
+            c.closeLocks(); // the handshake's locks are held between calls: let go of them; the pool belongs to whoever gave it
+        }
     }
 
     /**

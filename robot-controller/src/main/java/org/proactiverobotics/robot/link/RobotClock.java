@@ -50,4 +50,27 @@ public interface RobotClock {
      * @throws LinkException when it could not be read
      */
     Optional<EngineTick> engineTick(int robotId) throws LinkException;
+
+    /**
+     * Whether {@link #awaitServed} waits in the database until the engine serves a step (then the
+     * robot need not poll first); false for a database that cannot.
+     *
+     * @return true when waiting in the server is possible now
+     */
+    default boolean waitsInServer() {
+        return false;
+    }
+
+    /**
+     * Waits in the database, for a bounded time, until the engine has served the step or may have,
+     * then reads as {@link #engineTick} does (the step may not be served yet: poll then).
+     *
+     * @param robotId the robot
+     * @param step    the step just published
+     * @return what the engine last published for it, or empty when no engine ever did
+     * @throws LinkException when it could not be read
+     */
+    default Optional<EngineTick> awaitServed(int robotId, long step) throws LinkException {
+        return engineTick(robotId);
+    }
 }

@@ -33,7 +33,7 @@ public final class RobotPool {
         HikariConfig config = Databases.allowMultiStatements(Databases.config(jdbcUrl, user, password), jdbcUrl);
         config.setConnectionTimeout(Math.max(250, connectionTimeoutMs));
         config.setValidationTimeout(250);
-        config.setMaximumPoolSize(2);
+        config.setMaximumPoolSize(3); // the link, a read beside it, and the handshake's locks (HandshakeLocks)
         config.setMinimumIdle(1);
         config.setPoolName("proactive-robot");
         if (jdbcUrl.startsWith("jdbc:mariadb:") || jdbcUrl.startsWith("jdbc:mysql:")) {

@@ -276,10 +276,7 @@ class JdbcRobotLinkTest {
              com.zaxxer.hikari.HikariDataSource robotPool = RobotPool.open(db.jdbcUrl(), db.user(), db.password());
              JdbcRobotLink link = new JdbcRobotLink(robotPool)) {
             RobotClock clock = link.clock();
-            long run = clock.beginRun(1, Timing.SYNC);
-            link.answer(1, new SensorAnswer(0, new GpsReading(0, 0), null, List.of(), null, new long[0]));
-            clock.publish(1, run, 1, 0, RunState.RUNNING);
-            link.answer(1, new SensorAnswer(32, new GpsReading(1, 0), new IuReading(0, 0, 0.5), List.of(), null, new long[0]));
+            long run = stepOneAndAnAnswerKeptForStepTwo(link);
             db.execute("RENAME TABLE iudata TO iudata_away"); // the round trip fails at the inertial reading
             try {
                 org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 2, 32, RunState.RUNNING))
@@ -294,6 +291,45 @@ class JdbcRobotLinkTest {
             assertThat(one(db, "SELECT yaw_rad FROM iudata WHERE sim_time_ms = 32")).containsExactly(0.5);
             assertThat(one(db, "SELECT step FROM robot_clock WHERE robot_id = 1")).containsExactly(2L);
         }
+    }
+
+    @ParameterizedTest
+    @EnumSource(value = DatabaseKind.class, names = "MARIADB")
+    void aPublicationThatCommittedThoughItsAnswerWasLostIsNotSentTwice(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind);
+             com.zaxxer.hikari.HikariDataSource robotPool = RobotPool.open(db.jdbcUrl(), db.user(), db.password());
+             JdbcRobotLink link = new JdbcRobotLink(robotPool)) {
+            RobotClock clock = link.clock();
+            long run = stepOneAndAnAnswerKeptForStepTwo(link);
+            db.execute("RENAME TABLE iudata TO iudata_away");
+            try {
+                org.assertj.core.api.Assertions.assertThatThrownBy(() -> clock.publish(1, run, 2, 32, RunState.RUNNING))
+                        .isInstanceOf(LinkException.class);
+            } finally {
+                db.execute("RENAME TABLE iudata_away TO iudata");
+            }
+            // what the server holds when a commit went through but its answer was lost on the way back
+            db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 32, 1, 0)");
+            db.execute("INSERT INTO iudata (robot_id, sim_time_ms, roll_rad, pitch_rad, yaw_rad) VALUES (1, 32, 0, 0, 0.5)");
+            db.execute("UPDATE robot_clock SET step = 2, sim_time_ms = 32 WHERE robot_id = 1");
+
+            clock.publish(1, run, 2, 32, RunState.RUNNING); // the retry finds the step published: the answer is not sent again
+            assertThat(one(db, "SELECT COUNT(*) FROM gps_stored_values WHERE sim_time_ms = 32")).containsExactly(1L);
+            assertThat(one(db, "SELECT COUNT(*) FROM iudata WHERE sim_time_ms = 32")).containsExactly(1L);
+            link.answer(1, new SensorAnswer(64, new GpsReading(2, 0), null, List.of(), null, new long[0]));
+            clock.publish(1, run, 3, 64, RunState.RUNNING); // and the next step goes on as usual
+            assertThat(one(db, "SELECT COUNT(*), MAX(x_m) FROM gps_stored_values")).containsExactly(3L, 2.0);
+        }
+    }
+
+    /** Begins a sync run, publishes step 1, and keeps step 2's answer (a GPS and an inertial reading) for its publication. */
+    private static long stepOneAndAnAnswerKeptForStepTwo(JdbcRobotLink link) throws LinkException {
+        RobotClock clock = link.clock();
+        long run = clock.beginRun(1, Timing.SYNC);
+        link.answer(1, new SensorAnswer(0, new GpsReading(0, 0), null, List.of(), null, new long[0]));
+        clock.publish(1, run, 1, 0, RunState.RUNNING);
+        link.answer(1, new SensorAnswer(32, new GpsReading(1, 0), new IuReading(0, 0, 0.5), List.of(), null, new long[0]));
+        return run;
     }
 
     /** The first row of a query, numbers normalised (Long for integers, Double, Boolean). */
