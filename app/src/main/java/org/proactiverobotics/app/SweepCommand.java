@@ -23,8 +23,10 @@ import org.proactiverobotics.app.mission.NoiseLevel;
 import org.proactiverobotics.app.sweep.MissionResult;
 import org.proactiverobotics.app.sweep.MissionRunner;
 import org.proactiverobotics.app.sweep.ResultsCsv;
+import org.proactiverobotics.app.sweep.Shard;
 import org.proactiverobotics.app.sweep.SummaryHtml;
 import org.proactiverobotics.app.sweep.Sweep;
+import org.proactiverobotics.app.sweep.SweepManifest;
 import org.proactiverobotics.app.sweep.SweepMission;
 import org.proactiverobotics.app.sweep.SweepProgress;
 import org.proactiverobotics.app.sweep.WorldJson;
@@ -47,6 +49,7 @@ import picocli.CommandLine.Spec;
  */
 @Command(name = "sweep",
         mixinStandardHelpOptions = true,
+        subcommands = SweepMergeCommand.class,
         description = {"Runs every combination of worlds x strategies x noise levels x seeds as its own mission, in one JVM,"
                 + " --jobs at a time, each on its own embedded database (or the direct link).",
                 "Writes results.csv (one row per mission, as it ends), summary.html (a sortable table and plots) and"
@@ -55,8 +58,10 @@ import picocli.CommandLine.Spec;
                         + " failure."})
 public final class SweepCommand implements Callable<Integer> {
 
-    @Option(names = "--worlds", paramLabel = "FILE|DIR|NAME", arity = "1..*", split = ",", required = true,
-            description = "World files, folders of world files (*.json, e.g. what generate wrote) or bundled worlds' names.")
+    // required, but checked in plan(): picocli would demand it of 'sweep merge' too
+    @Option(names = "--worlds", paramLabel = "FILE|DIR|NAME", arity = "1..*", split = ",",
+            description = "World files, folders of world files (*.json, e.g. what generate wrote) or bundled worlds' names."
+                    + " Required.")
     private List<String> worlds = new ArrayList<>();
 
     @Option(names = "--strategies", paramLabel = "NAME", split = ",",
@@ -89,6 +94,12 @@ public final class SweepCommand implements Callable<Integer> {
             description = "jdbc (each mission on an embedded H2 database of its own) or direct (in-process, no database)."
                     + " Default: ${DEFAULT-VALUE}.")
     private String link;
+
+    @Option(names = "--shard", paramLabel = "I/N",
+            description = "Run only slice I of N (I from 0 to N-1) of the combinations: mission k goes to slice (k-1) mod N,"
+                    + " so N processes (a Slurm job array, a Kubernetes indexed Job) run every combination once;"
+                    + " join their folders with 'sweep merge'. Default: 0/1, all of them.")
+    private String shard;
 
     @Option(names = "--out", paramLabel = "DIR",
             description = "Output folder; must not exist or be empty. Default: sweeps/sweep-<yyyyMMdd-HHmmss>/.")
@@ -138,11 +149,23 @@ public final class SweepCommand implements Callable<Integer> {
         List<SweepMission> missions = plan.missions();
         int jobsUsed = jobs != null ? jobs : Runtime.getRuntime().availableProcessors();
         stdout.printf(Locale.ROOT, "Sweep of %s (%d worlds x %d strategies x %d noise levels x %s) on %s, %d at a time%n",
-                Plural.of(missions.size(), "mission"), plan.worldCount(), plan.strategyCount(), plan.noiseCount(),
+                Plural.of(plan.all().size(), "mission"), plan.worldCount(), plan.strategyCount(), plan.noiseCount(),
                 seeds == null ? "each world's seed" : plan.seedCount() + " seeds",
                 plan.link() == MissionOptions.Link.DIRECT ? "the direct link" : "embedded H2", jobsUsed);
+        if (!plan.shard().isAll()) {
+            stdout.printf(Locale.ROOT, "Shard %s: %s of the %d%n", plan.shard(), Plural.of(missions.size(), "mission"),
+                    plan.all().size());
+        }
         stdout.println("Output: " + outDir);
         stdout.flush();
+        try {
+            SweepManifest.of(plan.all(), plan.shard(), plan.link(), plan.plugins().jars(),
+                    new Main.Version().getVersion()[0]).write(outDir);
+        } catch (IOException e) {
+            err.println("cannot write " + outDir.resolve(SweepManifest.FILE) + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
         Sweep sweep = new Sweep(missions, outDir, jobsUsed);
         CountDownLatch written = new CountDownLatch(1);
         Thread onCtrlC = new Thread(() -> {
@@ -201,13 +224,29 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     /** Everything the sweep runs, checked. */
-    private record Plan(List<SweepMission> missions, int worldCount, int strategyCount, int noiseCount, int seedCount,
+    private record Plan(List<SweepMission> all, Shard shard, int worldCount, int strategyCount, int noiseCount, int seedCount,
                         MissionOptions.Link link, ScenarioPlugins plugins) {
+
+        /** @return the missions this process runs: its shard's */
+        List<SweepMission> missions() {
+            return all.stream().filter(m -> shard.contains(m.index())).toList();
+        }
     }
 
     private Plan plan() {
+        if (worlds.isEmpty()) {
+            throw new BadInput("Missing required option: '--worlds=FILE|DIR|NAME' (see sweep --help)");
+        }
         if (jobs != null && jobs < 1) {
             throw new BadInput("--jobs must be at least 1: " + jobs);
+        }
+        Shard slice = Shard.ALL;
+        if (shard != null) {
+            try {
+                slice = Shard.parse(shard);
+            } catch (IllegalArgumentException e) {
+                throw new BadInput("--shard: " + e.getMessage());
+            }
         }
         MissionOptions.Link layer = switch (link) {
             case "jdbc" -> MissionOptions.Link.JDBC;
@@ -264,7 +303,7 @@ public final class SweepCommand implements Callable<Integer> {
                 }
             }
         }
-        return new Plan(missions, worldSpecs.size(), strategyList.size(), levels.size(),
+        return new Plan(missions, slice, worldSpecs.size(), strategyList.size(), levels.size(),
                 seedList == null ? 1 : seedList.size(), layer, plugins);
     }
 

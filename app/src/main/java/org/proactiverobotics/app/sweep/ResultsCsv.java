@@ -22,6 +22,9 @@ public final class ResultsCsv implements Closeable {
             "checkpointsReached", "checkpointsTotal", "simTimeS", "wallTimeS", "distanceM", "collisions", "minBattery",
             "recharges", "worldKind", "reason", "mission");
 
+    /** The file's format (the header aside): RFC 4180 with a bare newline between rows. */
+    static final CSVFormat FORMAT = CSVFormat.DEFAULT.builder().setRecordSeparator("\n").get();
+
     private final CSVPrinter printer;
 
     /**
@@ -32,8 +35,7 @@ public final class ResultsCsv implements Closeable {
      */
     public ResultsCsv(Path file) throws IOException {
         Writer writer = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
-        this.printer = new CSVPrinter(writer, CSVFormat.DEFAULT.builder().setHeader(COLUMNS.toArray(String[]::new))
-                .setRecordSeparator("\n").get());
+        this.printer = new CSVPrinter(writer, FORMAT.builder().setHeader(COLUMNS.toArray(String[]::new)).get());
         printer.flush();
     }
 
@@ -49,6 +51,21 @@ public final class ResultsCsv implements Closeable {
             printer.printRecord(m.world().name(), m.strategy().name(), m.noise().label(), m.seed(), r.outcome(), r.success(),
                     r.checkpointsReached(), r.checkpointsTotal(), r.simTimeS(), r.wallTimeS(), r.distanceM(), r.collisions(),
                     r.minBattery(), r.recharges(), m.worldKind(), r.reason(), m.folder());
+            printer.flush();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /**
+     * Appends a row as read from another results.csv (a shard's, when merging), value for value.
+     *
+     * @param values the row's values, in {@link #COLUMNS}' order
+     * @throws UncheckedIOException when the file cannot be written
+     */
+    public synchronized void appendValues(List<String> values) {
+        try {
+            printer.printRecord(values);
             printer.flush();
         } catch (IOException e) {
             throw new UncheckedIOException(e);
