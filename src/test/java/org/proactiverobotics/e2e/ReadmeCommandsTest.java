@@ -87,6 +87,9 @@ class ReadmeCommandsTest {
                 }
             }
         }
+        // a block that leaves a process running would write into the temporary directory after the test
+        script.append("left=$(jobs -p); if [ -n \"$left\" ]; then echo \"a README block left processes running: $left\";"
+                + " kill $left; wait; exit 1; fi\n");
         Path log = tmp.resolve("readme.log");
         ProcessBuilder pb = new ProcessBuilder("bash", "-x", "-c", script.toString()).directory(tmp.toFile())
                 .redirectErrorStream(true).redirectOutput(log.toFile());
