@@ -33,10 +33,11 @@ import org.slf4j.LoggerFactory;
  * wheel speeds ({@link #act()}).
  *
  * <p>Commands are checked ({@link Command#parse}): a malformed one, or one older than a command
- * already seen, is logged once and ignored, and the robot keeps its mode. A {@link Watchdog}
- * in simulated time stops the robot when no new valid command arrived for
- * {@link RobotConfig#watchdogTimeoutMs()} (engine gone, database down) and lets it go again when
- * commands come back.
+ * already seen, is logged once and ignored, and the robot keeps its mode. The robot stops at the
+ * step a database call fails (it can no longer hear the engine, so it does not drive on a command
+ * decided from readings it cannot refresh), and a {@link Watchdog} in simulated time stops it when
+ * no new valid command arrived for {@link RobotConfig#watchdogTimeoutMs()} (engine gone); either
+ * way it goes again only on a new command.
  */
 public class ProactiveController extends RobotSuperclass {
 
@@ -55,7 +56,8 @@ public class ProactiveController extends RobotSuperclass {
     private long lastExecutedCommandId = -1;
     private long lastStaleCommandLogged = -1;
     private long lastUnknownRequestCounted = -1;
-    private boolean watchdogStopped;
+    /** Stopped by a failed database call or the watchdog; a new command lets the robot go again. */
+    private boolean heldUntilNewCommand;
     private long lastRefusalWarnMs = NEVER;
     private long refusalsSinceWarn;
     private boolean seeded;
@@ -131,9 +133,9 @@ public class ProactiveController extends RobotSuperclass {
         return lastExecutedCommandId;
     }
 
-    /** @return whether the watchdog has stopped the robot and no new command came since */
-    public boolean stoppedByWatchdog() {
-        return watchdogStopped;
+    /** @return whether a failed database call or the watchdog has stopped the robot and no new command came since */
+    public boolean stoppedUntilNewCommand() {
+        return heldUntilNewCommand;
     }
 
     /** @return whether the start-up writes (mission rows, first battery level) are done */
@@ -216,14 +218,22 @@ public class ProactiveController extends RobotSuperclass {
         if (newest != null && newest.isPresent()) {
             consider(newest.get(), now);
         }
-        if (!watchdogStopped && watchdog.expired(now)) {
-            watchdogStopped = true;
+        if (!heldUntilNewCommand && watchdog.armed() && databaseFailing()) {
+            stats.linkStops++;
+            hold("robot {}: the database failed {} ms of simulated time after the last new command: stopping until a"
+                    + " new command comes", watchdog.sinceLastFeedMs(now));
+        } else if (!heldUntilNewCommand && watchdog.expired(now)) {
             stats.watchdogStops++;
-            LOG.warn("robot {}: no new command for {} ms of simulated time (engine gone or database down): stopping",
-                    robotId, watchdog.sinceLastFeedMs(now));
-            switchTo(Command.STOP);
+            hold("robot {}: no new command for {} ms of simulated time (engine gone or too slow): stopping",
+                    watchdog.sinceLastFeedMs(now));
         }
         applyMode();
+    }
+
+    private void hold(String warning, long sinceLastCommandMs) {
+        heldUntilNewCommand = true;
+        LOG.warn(warning, robotId, sinceLastCommandMs);
+        switchTo(Command.STOP);
     }
 
     /** Sets the wheels from the mode: the paper's switch. */
@@ -259,8 +269,8 @@ public class ProactiveController extends RobotSuperclass {
             return;
         }
         watchdog.feed(now);
-        if (watchdogStopped) {
-            watchdogStopped = false;
+        if (heldUntilNewCommand) {
+            heldUntilNewCommand = false;
             LOG.info("robot {}: commands are back (id {}, '{}'): resuming", robotId, record.id(), record.command());
         }
         lastExecutedCommandId = record.id();

@@ -15,9 +15,11 @@ package org.proactiverobotics.robot;
  * @param commandsIgnored    commands ignored: malformed, unknown, or older than one executed
  * @param unknownRequests    requests for a sensor this robot does not have (left pending)
  * @param watchdogStops      times the watchdog stopped the robot
+ * @param linkStops          times a failed database call stopped the robot
  * @param rowsPruned         history rows deleted by the retention policy
  */
 public record RobotStats(long controlSteps, long requestsAnswered, long readingsWritten, long readingsNotWritten,
                          long failedCalls, long skippedCalls, long outages, long commandsExecuted,
-                         long commandsIgnored, long unknownRequests, long watchdogStops, long rowsPruned) {
+                         long commandsIgnored, long unknownRequests, long watchdogStops, long linkStops,
+                         long rowsPruned) {
 }

@@ -213,7 +213,7 @@ public abstract class RobotSuperclass implements AutoCloseable {
                 failedAtOutageStart = stats.failedCalls;
                 skippedAtOutageStart = stats.skippedCalls;
                 lostAtOutageStart = stats.readingsNotWritten;
-                LOG.warn("robot {}: database call failed ({}): {}; the robot stops when the watchdog expires and "
+                LOG.warn("robot {}: database call failed ({}): {}; the robot stops until a new command comes and "
                         + "retries with back-off", config.robotId(), what, e.toString());
             } else {
                 LOG.debug("robot {}: database still failing ({}): {}", config.robotId(), what, e.toString());

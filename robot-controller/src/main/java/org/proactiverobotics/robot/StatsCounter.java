@@ -13,10 +13,12 @@ final class StatsCounter {
     long commandsIgnored;
     long unknownRequests;
     long watchdogStops;
+    long linkStops;
     long rowsPruned;
 
     RobotStats snapshot() {
         return new RobotStats(controlSteps, requestsAnswered, readingsWritten, readingsNotWritten, failedCalls,
-                skippedCalls, outages, commandsExecuted, commandsIgnored, unknownRequests, watchdogStops, rowsPruned);
+                skippedCalls, outages, commandsExecuted, commandsIgnored, unknownRequests, watchdogStops, linkStops,
+                rowsPruned);
     }
 }

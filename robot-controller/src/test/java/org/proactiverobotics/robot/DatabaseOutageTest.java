@@ -26,7 +26,7 @@ class DatabaseOutageTest {
     private static final int ROBOT = 3;
 
     @Test
-    void withTheDatabaseStoppedTheRobotStopsAndItRecoversWhenTheDatabaseReturns() throws Exception {
+    void withTheDatabaseStoppedTheRobotStopsAtOnceAndItRecoversWhenTheDatabaseReturns() throws Exception {
         String name = "outage_" + UUID.randomUUID().toString().replace("-", "").substring(0, 8);
         int port;
         try (ServerSocket probe = new ServerSocket(0)) {
@@ -53,18 +53,23 @@ class DatabaseOutageTest {
 
             server.stop();
             engine.request("GPS");
+            double atFailure = sim.groundTruth().distanceM();
             long startNanos = System.nanoTime();
             int steps = 0;
-            while (!robot.stoppedByWatchdog() && steps < 40) {
+            while (!robot.stoppedUntilNewCommand() && steps < 40) {
                 engine.command("FORWARD 0.2"); // sent, but the robot cannot read it
                 robot.controlStep();
                 sim.step();
                 steps++;
             }
             long wallMs = (System.nanoTime() - startNanos) / 1_000_000;
-            assertThat(robot.stoppedByWatchdog()).isTrue();
-            assertThat(steps).isEqualTo(11); // 320 ms of simulated time without a new command
-            assertThat(wallMs).as("the loop never blocks for long").isLessThan(11 * 2_500);
+            assertThat(robot.stoppedUntilNewCommand()).isTrue();
+            // Stopped at the step the link failed, not 320 ms of blind driving later when the watchdog would expire.
+            assertThat(steps).isEqualTo(1);
+            assertThat(sim.groundTruth().distanceM()).isEqualTo(atFailure);
+            assertThat(robot.stats().linkStops()).isEqualTo(1);
+            assertThat(robot.stats().watchdogStops()).isZero();
+            assertThat(wallMs).as("the loop never blocks for long").isLessThan(2_500);
             assertThat(robot.databaseFailing()).isTrue();
             assertThat(sim.robot().leftSpeedMps()).isZero();
             double stoppedAt = sim.groundTruth().distanceM();
@@ -87,12 +92,12 @@ class DatabaseOutageTest {
 
             server = Server.createTcpServer("-tcpPort", String.valueOf(port), "-ifNotExists").start();
             long deadline = System.nanoTime() + 10_000_000_000L;
-            while (robot.stoppedByWatchdog() && System.nanoTime() < deadline) {
+            while (robot.stoppedUntilNewCommand() && System.nanoTime() < deadline) {
                 engine.command("FORWARD 0.2");
                 robot.controlStep();
                 sim.step();
             }
-            assertThat(robot.stoppedByWatchdog()).isFalse();
+            assertThat(robot.stoppedUntilNewCommand()).isFalse();
             assertThat(robot.databaseFailing()).isFalse();
             assertThat(robot.mode()).isEqualTo(Mode.FORWARD);
             robot.controlStep();

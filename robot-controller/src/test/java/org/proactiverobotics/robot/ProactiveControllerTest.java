@@ -59,7 +59,7 @@ class ProactiveControllerTest {
                 }
                 // No command yet: waiting, not a watchdog stop; nothing moved.
                 assertThat(robot.mode()).isEqualTo(Mode.WAITING);
-                assertThat(robot.stoppedByWatchdog()).isFalse();
+                assertThat(robot.stoppedUntilNewCommand()).isFalse();
                 assertThat(sim.groundTruth().distanceM()).isZero();
             }
         }
@@ -184,7 +184,7 @@ class ProactiveControllerTest {
             try (ProactiveController robot = controller(db, sim, CONFIG)) {
                 engine.command("FORWARD 0.2");
                 int steps = 0;
-                while (!robot.stoppedByWatchdog() && steps < 100) {
+                while (!robot.stoppedUntilNewCommand() && steps < 100) {
                     robot.controlStep();
                     sim.step();
                     steps++;
@@ -201,10 +201,11 @@ class ProactiveControllerTest {
                 }
                 assertThat(sim.groundTruth().distanceM()).isEqualTo(moved);
                 assertThat(robot.stats().watchdogStops()).isEqualTo(1);
+                assertThat(robot.stats().linkStops()).isZero();
 
                 engine.command("FORWARD 0.2");
                 robot.controlStep();
-                assertThat(robot.stoppedByWatchdog()).isFalse();
+                assertThat(robot.stoppedUntilNewCommand()).isFalse();
                 assertThat(robot.mode()).isEqualTo(Mode.FORWARD);
                 sim.step();
                 assertThat(sim.groundTruth().distanceM()).isGreaterThan(moved);
@@ -220,7 +221,7 @@ class ProactiveControllerTest {
                     robot.controlStep();
                     sim.step();
                 }
-                assertThat(robot.stoppedByWatchdog()).isTrue();
+                assertThat(robot.stoppedUntilNewCommand()).isTrue();
             }
         }
     }
