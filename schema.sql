@@ -6,9 +6,12 @@
 -- carry the simulated time in milliseconds (sim_time_ms); column names carry units:
 -- _m metres, _rad radians, _pct percent (0-100), _ms milliseconds.
 -- The robot writes readings; the engine writes requests, commands and its own state.
--- "Newest" reads go through (robot_id, id) indexes: ids grow with time on both sides. Write
--- them as ORDER BY robot_id DESC, id DESC LIMIT 1: H2 then walks the index backwards (a plain
--- ORDER BY id DESC scans every row of the robot); MariaDB and MySQL do the same with either.
+-- "Newest" is by simulated time (readings) or by the engine's iteration (commands), never by id:
+-- on a Galera cluster ids from different nodes interleave. The reads go through
+-- (robot_id, sim_time_ms, id) and (robot_id, iteration, id) indexes, written as
+-- ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1: H2 walks an index backwards only
+-- when the ORDER BY names its columns (a plain ORDER BY id DESC scans every row of the robot).
+-- A database made before these indexes gets them from the application (db.Schema).
 
 -- ======================================================================================
 -- The paper's eight tables
@@ -21,7 +24,7 @@ CREATE TABLE IF NOT EXISTS gps_stored_values (
   sim_time_ms BIGINT NOT NULL,
   x_m         DOUBLE NOT NULL,
   y_m         DOUBLE NOT NULL,
-  INDEX idx_gps_newest (robot_id, id)
+  INDEX idx_gps_time (robot_id, sim_time_ms, id)
 );
 
 -- Inertial unit readings (sensor 'IU'); yaw 0 = +x axis, counter-clockwise positive.
@@ -32,7 +35,7 @@ CREATE TABLE IF NOT EXISTS iudata (
   roll_rad    DOUBLE NOT NULL,
   pitch_rad   DOUBLE NOT NULL,
   yaw_rad     DOUBLE NOT NULL,
-  INDEX idx_iu_newest (robot_id, id)
+  INDEX idx_iu_time (robot_id, sim_time_ms, id)
 );
 
 -- Distance sensor readings (sensor 'DS'): one row per sensor; one reading = the rows of one
@@ -57,7 +60,7 @@ CREATE TABLE IF NOT EXISTS battery_level (
   sim_time_ms BIGINT  NOT NULL,
   level_pct   DOUBLE  NOT NULL,
   charging    BOOLEAN NOT NULL DEFAULT FALSE,
-  INDEX idx_battery_newest (robot_id, id)
+  INDEX idx_battery_time (robot_id, sim_time_ms, id)
 );
 
 -- The level a recharge stops at (mission row, seeded from the world file).
@@ -92,7 +95,7 @@ CREATE TABLE IF NOT EXISTS engine_comments (
   scenario    VARCHAR(64)  NOT NULL,
   command     VARCHAR(255) NOT NULL,
   created_at  TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3),
-  INDEX idx_comments_newest (robot_id, id)
+  INDEX idx_comments_iteration (robot_id, iteration, id)
 );
 
 -- Where the robot recharges (mission row, seeded from the world file).

@@ -5,11 +5,13 @@ import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.sql.Connection;
+import java.sql.DatabaseMetaData;
 import java.sql.ResultSet;
 import java.sql.SQLException;
 import java.sql.Statement;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import javax.sql.DataSource;
 
 /**
@@ -39,7 +41,39 @@ public final class Schema {
                     execute(statement, "ALTER TABLE " + added[0] + " ADD COLUMN " + added[1] + " " + added[2]);
                 }
             }
+            for (String[] added : ADDED_INDEXES) {
+                if (!hasIndex(connection, added[0], added[1])) {
+                    execute(statement, "CREATE INDEX " + added[1] + " ON " + added[0] + " (" + added[2] + ")");
+                }
+            }
         }
+    }
+
+    /**
+     * Indexes added to a table after it first shipped: {table, index, columns}, each also in the
+     * table's CREATE TABLE (MySQL 8 has no {@code CREATE INDEX IF NOT EXISTS}). The "newest" reads
+     * went from id order to simulated-time and iteration order; the old (robot_id, id) indexes of
+     * such a database stay, unused.
+     */
+    private static final String[][] ADDED_INDEXES = {
+        {"gps_stored_values", "idx_gps_time", "robot_id, sim_time_ms, id"},
+        {"iudata", "idx_iu_time", "robot_id, sim_time_ms, id"},
+        {"battery_level", "idx_battery_time", "robot_id, sim_time_ms, id"},
+        {"engine_comments", "idx_comments_iteration", "robot_id, iteration, id"},
+    };
+
+    private static boolean hasIndex(Connection connection, String table, String index) throws SQLException {
+        DatabaseMetaData meta = connection.getMetaData();
+        for (String name : new String[] {table, table.toUpperCase(Locale.ROOT)}) {
+            try (ResultSet rs = meta.getIndexInfo(connection.getCatalog(), null, name, false, false)) {
+                while (rs.next()) {
+                    if (index.equalsIgnoreCase(rs.getString("INDEX_NAME"))) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     /**

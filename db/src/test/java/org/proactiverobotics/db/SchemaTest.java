@@ -48,13 +48,15 @@ class SchemaTest {
 
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
-    void newestReadingComesFromTheRobotsOwnRows(DatabaseKind kind) throws Exception {
+    void newestReadingComesFromTheRobotsOwnRowsByTimeNotId(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind)) {
-            db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 32, 0.5, 1.5)");
-            db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (2, 64, 9.0, 9.0)");
-            db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 64, 0.6, 1.4)");
+            // Ids as two Galera nodes hand them out: the newest reading has the smaller id.
+            db.execute("INSERT INTO gps_stored_values (id, robot_id, sim_time_ms, x_m, y_m) VALUES (10, 1, 32, 0.5, 1.5)");
+            db.execute("INSERT INTO gps_stored_values (id, robot_id, sim_time_ms, x_m, y_m) VALUES (11, 2, 96, 9.0, 9.0)");
+            db.execute("INSERT INTO gps_stored_values (id, robot_id, sim_time_ms, x_m, y_m) VALUES (8, 1, 64, 0.6, 1.4)");
             try (Connection c = db.dataSource().getConnection();
-                 var ps = c.prepareStatement("SELECT x_m, sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY id DESC LIMIT 1")) {
+                 var ps = c.prepareStatement("SELECT x_m, sim_time_ms FROM gps_stored_values WHERE robot_id = ?"
+                         + " ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1")) {
                 ps.setInt(1, 1);
                 try (ResultSet rs = ps.executeQuery()) {
                     assertThat(rs.next()).isTrue();

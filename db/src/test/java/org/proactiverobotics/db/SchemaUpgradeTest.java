@@ -8,7 +8,7 @@ import java.sql.Statement;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
-/** A database made before a column was added gets it when the schema is applied again. */
+/** A database made before a column or an index was added gets it when the schema is applied again. */
 class SchemaUpgradeTest {
 
     @ParameterizedTest
@@ -47,5 +47,50 @@ class SchemaUpgradeTest {
                 assertThat(rs.getBoolean(1)).isFalse();
             }
         }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void readingAndCommandTablesMadeWithIdIndexesGetTheTimeAndIterationIndexes(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            db.execute("DROP TABLE gps_stored_values");
+            db.execute("CREATE TABLE gps_stored_values (id BIGINT AUTO_INCREMENT PRIMARY KEY, robot_id INT NOT NULL,"
+                    + " sim_time_ms BIGINT NOT NULL, x_m DOUBLE NOT NULL, y_m DOUBLE NOT NULL, INDEX idx_gps_newest (robot_id, id))");
+            db.execute("DROP TABLE engine_comments");
+            db.execute("CREATE TABLE engine_comments (id BIGINT AUTO_INCREMENT PRIMARY KEY, robot_id INT NOT NULL,"
+                    + " iteration BIGINT NOT NULL, sim_time_ms BIGINT NOT NULL, scenario VARCHAR(64) NOT NULL,"
+                    + " command VARCHAR(255) NOT NULL, created_at TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3),"
+                    + " INDEX idx_comments_newest (robot_id, id))");
+            db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 32, 0.5, 1.5)");
+            assertThat(indexes(db, "gps_stored_values")).doesNotContain("idx_gps_time");
+            Schema.apply(db.dataSource());
+            Schema.apply(db.dataSource()); // and again: harmless
+            assertThat(indexes(db, "gps_stored_values")).contains("idx_gps_time", "idx_gps_newest");
+            assertThat(indexes(db, "engine_comments")).contains("idx_comments_iteration");
+            assertThat(indexes(db, "iudata")).contains("idx_iu_time");
+            assertThat(indexes(db, "battery_level")).contains("idx_battery_time");
+            try (Connection c = db.dataSource().getConnection(); Statement s = c.createStatement();
+                 ResultSet rs = s.executeQuery("SELECT COUNT(*) FROM gps_stored_values")) {
+                assertThat(rs.next()).isTrue();
+                assertThat(rs.getLong(1)).isOne();
+            }
+        }
+    }
+
+    private static java.util.Set<String> indexes(TestDatabase db, String table) throws Exception {
+        java.util.Set<String> names = new java.util.TreeSet<>();
+        try (Connection c = db.dataSource().getConnection()) {
+            for (String name : new String[] {table, table.toUpperCase(java.util.Locale.ROOT)}) {
+                try (ResultSet rs = c.getMetaData().getIndexInfo(c.getCatalog(), null, name, false, false)) {
+                    while (rs.next()) {
+                        String index = rs.getString("INDEX_NAME");
+                        if (index != null) {
+                            names.add(index.toLowerCase(java.util.Locale.ROOT));
+                        }
+                    }
+                }
+            }
+        }
+        return names;
     }
 }

@@ -33,11 +33,12 @@ import org.slf4j.LoggerFactory;
  * wheel speeds ({@link #act()}).
  *
  * <p>Commands are checked ({@link Command#parse}): a malformed one, or one older than a command
- * already seen, is logged once and ignored, and the robot keeps its mode. The robot stops at the
- * step a database call fails (it can no longer hear the engine, so it does not drive on a command
- * decided from readings it cannot refresh), and a {@link Watchdog} in simulated time stops it when
- * no new valid command arrived for {@link RobotConfig#watchdogTimeoutMs()} (engine gone); either
- * way it goes again only on a new command.
+ * already seen (of an earlier engine iteration), is logged once and ignored, and the robot keeps
+ * its mode. The robot stops at the step a database call fails (it can no longer hear the engine,
+ * so it does not drive on a command decided from readings it cannot refresh), and a
+ * {@link Watchdog} in simulated time stops it when no new valid command arrived for
+ * {@link RobotConfig#watchdogTimeoutMs()} (engine gone); either way it goes again only on a new
+ * command.
  */
 public class ProactiveController extends RobotSuperclass {
 
@@ -53,6 +54,7 @@ public class ProactiveController extends RobotSuperclass {
     private Mode mode = Mode.WAITING;
     private Command current = Command.STOP;
     private long lastSeenCommandId = -1;
+    private long lastSeenIteration = Long.MIN_VALUE;
     private long lastExecutedCommandId = -1;
     private long lastStaleCommandLogged = -1;
     private long lastUnknownRequestCounted = -1;
@@ -249,16 +251,19 @@ public class ProactiveController extends RobotSuperclass {
         if (record.id() == lastSeenCommandId) {
             return; // nothing new
         }
-        if (record.id() < lastSeenCommandId) {
+        // Older by the engine's iteration, then by id: ids from different Galera nodes interleave.
+        if (record.iteration() < lastSeenIteration || record.iteration() == lastSeenIteration && record.id() < lastSeenCommandId) {
             if (record.id() != lastStaleCommandLogged) {
                 lastStaleCommandLogged = record.id();
                 stats.commandsIgnored++;
-                LOG.warn("robot {}: ignoring command id {} ('{}'): older than command id {} already seen",
-                        robotId, record.id(), record.command(), lastSeenCommandId);
+                LOG.warn("robot {}: ignoring command id {} ('{}', iteration {}): older than command id {} (iteration {})"
+                        + " already seen", robotId, record.id(), record.command(), record.iteration(), lastSeenCommandId,
+                        lastSeenIteration);
             }
             return;
         }
         lastSeenCommandId = record.id();
+        lastSeenIteration = record.iteration();
         Command command;
         try {
             command = Command.parse(record.command(), robot.maxSpeedMps());

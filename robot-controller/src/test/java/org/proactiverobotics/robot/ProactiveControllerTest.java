@@ -177,6 +177,28 @@ class ProactiveControllerTest {
 
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
+    void aLaterIterationsCommandRunsEvenWhenItsIdIsSmaller(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            FakeEngine engine = new FakeEngine(db.dataSource(), ROBOT);
+            Simulation sim = new Simulation(TestWorlds.arena());
+            try (ProactiveController robot = controller(db, sim, CONFIG)) {
+                // As on a Galera cluster when the engine moved to the node whose id counter is behind.
+                engine.execute("INSERT INTO engine_comments (id, robot_id, iteration, sim_time_ms, scenario, command)"
+                        + " VALUES (31, " + ROBOT + ", 7, 224, 'A', 'FORWARD 0.3')");
+                robot.controlStep();
+                assertThat(robot.mode()).isEqualTo(Mode.FORWARD);
+                engine.execute("INSERT INTO engine_comments (id, robot_id, iteration, sim_time_ms, scenario, command)"
+                        + " VALUES (29, " + ROBOT + ", 8, 256, 'B', 'TURN_LEFT 0.2')");
+                robot.controlStep();
+                assertThat(robot.mode()).isEqualTo(Mode.TURN_LEFT);
+                assertThat(robot.lastExecutedCommandId()).isEqualTo(29);
+                assertThat(robot.stats().commandsIgnored()).isZero();
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
     void theWatchdogStopsTheRobotAndLetsItGoAgain(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind)) {
             FakeEngine engine = new FakeEngine(db.dataSource(), ROBOT);

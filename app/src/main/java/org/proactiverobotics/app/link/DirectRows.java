@@ -23,7 +23,8 @@ import org.proactiverobotics.robot.link.SensorRequest;
 
 /**
  * One robot's rows of schema.sql, in memory, with the JDBC tables' semantics: ids grow per
- * table, the newest row (largest id) wins, a request is pending until answered, an answer is
+ * table, the newest row wins (kept in the order written, which in one process is the order of
+ * simulated time and iteration the tables sort by), a request is pending until answered, an answer is
  * atomic, mission rows are seeded once, history is pruned to the newest n. Readings are kept in
  * the engine's record types, so a read allocates nothing. Every method holds this object's lock:
  * the robot and the engine may run on two threads. Units as in the tables: simulated

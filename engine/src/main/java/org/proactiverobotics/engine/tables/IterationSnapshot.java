@@ -25,17 +25,18 @@ import java.util.Set;
 final class IterationSnapshot {
 
     // One UNION ALL of ten columns: kind, three integers, four doubles, two strings. The "newest"
-    // subqueries keep their ORDER BY robot_id DESC, id DESC LIMIT 1 (the (robot_id, id) index, read backwards).
+    // subqueries keep their ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1 (the
+    // (robot_id, sim_time_ms, id) index, read backwards): newest by simulated time, not by id.
     // Wrapped in a plain SELECT because H2 caches a prepared SELECT but re-parses a bare UNION at
     // every prepare (the parse was a quarter of an H2 mission's time, JFR). %d is the row's kind:
     // the part (1-9) plus ten times the robot's place in a query for several robots.
     private static final String[] PARTS = {
         "(SELECT %d AS k, sim_time_ms AS n1, 0 AS n2, 0 AS n3, x_m AS d1, y_m AS d2, CAST(0 AS DOUBLE) AS d3,"
-            + " CAST(0 AS DOUBLE) AS d4, '' AS s1, '' AS s2 FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1)",
+            + " CAST(0 AS DOUBLE) AS d4, '' AS s1, '' AS s2 FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1)",
         "(SELECT %d, sim_time_ms, 0, 0, yaw_rad, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', '' FROM iudata WHERE robot_id = ?"
-            + " ORDER BY robot_id DESC, id DESC LIMIT 1)",
+            + " ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1)",
         "(SELECT %d, sim_time_ms, CASE WHEN charging THEN 1 ELSE 0 END, 0, level_pct, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', ''"
-            + " FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1)",
+            + " FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1)",
         "(SELECT %d, sim_time_ms, sensor_index, 0, angle_rad, distance_m, range_m, CAST(0 AS DOUBLE), '', ''"
             + " FROM distance_sensor_data WHERE robot_id = ? AND sim_time_ms = (SELECT sim_time_ms FROM distance_sensor_data"
             + " WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1))",

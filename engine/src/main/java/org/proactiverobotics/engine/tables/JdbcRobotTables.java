@@ -169,7 +169,7 @@ public final class JdbcRobotTables
             return snap.gps();
         }
         return queryOne("newest GPS reading",
-                "SELECT sim_time_ms, x_m, y_m FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
+                "SELECT sim_time_ms, x_m, y_m FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1",
                 rs -> new GpsFix(rs.getLong(1), rs.getDouble(2), rs.getDouble(3)));
     }
 
@@ -180,7 +180,7 @@ public final class JdbcRobotTables
             return snap.heading();
         }
         return queryOne("newest inertial-unit reading",
-                "SELECT sim_time_ms, yaw_rad FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
+                "SELECT sim_time_ms, yaw_rad FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1",
                 rs -> new Heading(rs.getLong(1), rs.getDouble(2)));
     }
 
@@ -232,7 +232,7 @@ public final class JdbcRobotTables
             return snap.battery();
         }
         return queryOne("newest battery reading",
-                "SELECT sim_time_ms, level_pct, charging FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1",
+                "SELECT sim_time_ms, level_pct, charging FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1",
                 rs -> new BatteryState(rs.getLong(1), rs.getDouble(2), rs.getBoolean(3)));
     }
 
@@ -243,10 +243,10 @@ public final class JdbcRobotTables
             return snap.newestSimTimeMs(sensor);
         }
         String sql = switch (sensor) {
-            case GPS -> "SELECT sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
-            case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
+            case GPS -> "SELECT sim_time_ms FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1";
+            case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1";
             case DS -> "SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1";
-            case BATTERY -> "SELECT sim_time_ms FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, id DESC LIMIT 1";
+            case BATTERY -> "SELECT sim_time_ms FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1";
         };
         return queryOne("newest " + sensor + " time", sql, rs -> rs.getLong(1)).orElse(-1L);
     }
@@ -502,20 +502,24 @@ public final class JdbcRobotTables
     public int pruneHistory(int keepRows) {
         int deleted = 0;
         try (Connection c = dataSource.getConnection()) {
-            deleted += pruneOlderThanNewest(c, "engine_comments", "", keepRows);
-            deleted += pruneOlderThanNewest(c, "rule_failures", "", keepRows);
-            deleted += pruneOlderThanNewest(c, "sensor_requests", " AND answered_sim_time_ms IS NOT NULL", keepRows);
+            deleted += pruneOlderThanNewest(c, "engine_comments", "iteration", "", keepRows);
+            deleted += pruneOlderThanNewest(c, "rule_failures", "id", "", keepRows);
+            deleted += pruneOlderThanNewest(c, "sensor_requests", "id", " AND answered_sim_time_ms IS NOT NULL", keepRows);
         } catch (SQLException e) {
             throw failure("pruning the engine history of robot " + robotId, e);
         }
         return deleted;
     }
 
-    /** Deletes a robot's rows older than its keep-th newest (found through the (robot_id, id) index). */
-    private int pruneOlderThanNewest(Connection c, String table, String filter, int keep) throws SQLException {
+    /**
+     * Deletes a robot's rows older than its keep-th newest in the given order. Commands go by
+     * iteration (one per iteration), since ids from different Galera nodes interleave and the newest
+     * command must never go; answered requests and rule failures are history and go by id.
+     */
+    private int pruneOlderThanNewest(Connection c, String table, String order, String filter, int keep) throws SQLException {
         long boundary;
-        try (PreparedStatement ps = c.prepareStatement("SELECT id FROM " + table + " WHERE robot_id = ?" + filter
-                + " ORDER BY robot_id DESC, id DESC LIMIT 1 OFFSET " + keep)) {
+        try (PreparedStatement ps = c.prepareStatement("SELECT " + order + " FROM " + table + " WHERE robot_id = ?" + filter
+                + " ORDER BY robot_id DESC, " + (order.equals("id") ? "" : order + " DESC, ") + "id DESC LIMIT 1 OFFSET " + keep)) {
             ps.setInt(1, robotId);
             try (ResultSet rs = ps.executeQuery()) {
                 if (!rs.next()) {
@@ -524,7 +528,7 @@ public final class JdbcRobotTables
                 boundary = rs.getLong(1);
             }
         }
-        try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ? AND id <= ?" + filter)) {
+        try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ? AND " + order + " <= ?" + filter)) {
             ps.setInt(1, robotId);
             ps.setLong(2, boundary);
             return ps.executeUpdate();

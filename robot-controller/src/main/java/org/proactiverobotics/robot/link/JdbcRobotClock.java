@@ -32,7 +32,7 @@ public final class JdbcRobotClock implements RobotClock {
     private static final String TICK_WITH_READS = "(SELECT 1 AS k, run_id AS a, step AS b, iteration AS c, '' AS s1, '' AS s2"
             + " FROM engine_clock WHERE robot_id = ?)"
             + " UNION ALL (SELECT 2, id, iteration, sim_time_ms, scenario, command FROM engine_comments WHERE robot_id = ?"
-            + " ORDER BY robot_id DESC, id DESC LIMIT 1)"
+            + " ORDER BY robot_id DESC, iteration DESC, id DESC LIMIT 1)"
             + " UNION ALL (SELECT 3, id, 0, 0, sensor, '' FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL)";
 
     /** "Sensed step k": the robot's half of the handshake. */

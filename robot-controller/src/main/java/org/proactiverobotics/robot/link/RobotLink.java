@@ -46,7 +46,8 @@ public interface RobotLink extends AutoCloseable {
      * The newest command the engine sent to this robot.
      *
      * @param robotId the robot
-     * @return the command with the largest id, or empty when none was sent yet
+     * @return the command of the latest engine iteration (the larger id between two of one
+     *         iteration), or empty when none was sent yet
      * @throws LinkException when the engine's side cannot be read
      */
     Optional<CommandRecord> newestCommand(int robotId) throws LinkException;

@@ -75,7 +75,7 @@ class JdbcRobotLinkTest {
 
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
-    void newestCommandIsTheOneWithTheLargestIdForThisRobot(DatabaseKind kind) throws Exception {
+    void newestCommandIsTheLatestIterationsForThisRobot(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
             assertThat(link.newestCommand(1)).isEmpty();
             db.execute("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (1, 1, 32, 'A', 'STOP')");
@@ -86,6 +86,34 @@ class JdbcRobotLinkTest {
             assertThat(newest.iteration()).isEqualTo(2);
             assertThat(newest.simTimeMs()).isEqualTo(64);
             assertThat(newest.scenario()).isEqualTo("B");
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void newestCommandIsTheLatestIterationsEvenWhenItsIdIsSmaller(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
+            // Ids as two Galera nodes (auto_increment_increment 3) hand them out: iteration 8 came through the node
+            // whose counter is behind.
+            db.execute("INSERT INTO engine_comments (id, robot_id, iteration, sim_time_ms, scenario, command) VALUES (31, 1, 7, 224, 'A', 'STOP')");
+            db.execute("INSERT INTO engine_comments (id, robot_id, iteration, sim_time_ms, scenario, command) VALUES (29, 1, 8, 256, 'B', 'FORWARD 0.3')");
+            assertThat(link.newestCommand(1).orElseThrow().iteration()).isEqualTo(8);
+            assertThat(link.newestCommand(1).orElseThrow().command()).isEqualTo("FORWARD 0.3");
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void pruningKeepsTheNewestReadingsBySimulatedTimeNotById(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind); RobotLink link = new JdbcRobotLink(db.dataSource())) {
+            long[] ids = {40, 43, 46, 38, 41, 44}; // steps 0-2 on one node, 3-5 on one whose counter was behind
+            for (int step = 0; step < ids.length; step++) {
+                db.execute("INSERT INTO gps_stored_values (id, robot_id, sim_time_ms, x_m, y_m) VALUES (" + ids[step] + ", 1, "
+                        + step * 32 + ", " + step + ", 0)");
+            }
+            assertThat(link.prune(1, new RetentionPolicy(3, 1))).isEqualTo(3);
+            assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms), MAX(sim_time_ms) FROM gps_stored_values WHERE robot_id = 1"))
+                    .containsExactly(3L, 3 * 32L, 5 * 32L);
         }
     }
 
