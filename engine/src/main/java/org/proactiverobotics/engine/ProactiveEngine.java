@@ -120,9 +120,22 @@ public final class ProactiveEngine {
      * @param initialRules the rules of iteration 1
      */
     public void startFresh(Rule... initialRules) {
+        startFresh(0, initialRules);
+    }
+
+    /**
+     * {@link #startFresh(Rule...)} whose iterations go on from a given number, for a fresh start
+     * in the middle of a robot's run: the robot ignores commands of iterations earlier than one it
+     * already ran, so numbering must not go back.
+     *
+     * @param afterIteration the iteration the first one follows (0 for a new run)
+     * @param initialRules   the rules of the first iteration
+     */
+    public void startFresh(long afterIteration, Rule... initialRules) {
         store.clear(robotId);
-        reset(0, new SharedMemory(memorySlots), List.of(initialRules));
-        LOG.info("engine {} started fresh (saved state cleared)", robotId);
+        reset(afterIteration, new SharedMemory(memorySlots), List.of(initialRules));
+        LOG.info("engine {} started fresh (saved state cleared){}", robotId,
+                afterIteration == 0 ? "" : ", iterations going on after " + afterIteration);
     }
 
     private void reset(long iteration, SharedMemory memory, List<Rule> rules) {

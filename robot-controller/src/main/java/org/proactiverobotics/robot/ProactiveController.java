@@ -125,7 +125,7 @@ public class ProactiveController extends RobotSuperclass {
         return mode;
     }
 
-    /** @return the command being executed ({@link Command#STOP} while waiting or stopped by the watchdog) */
+    /** @return the command being executed ({@link Command#STOP} while waiting, or stopped by a failed call or the watchdog) */
     public Command currentCommand() {
         return current;
     }

@@ -23,8 +23,12 @@ class RobotServerTest {
     private static final long RUN = 42;
 
     private static RobotServer server(DataSource ds, int robot, boolean setAsideOnCorrupt) {
+        return server(ds, robot, setAsideOnCorrupt, false);
+    }
+
+    private static RobotServer server(DataSource ds, int robot, boolean setAsideOnCorrupt, boolean fresh) {
         EngineLease lease = new EngineLease(ds, robot, "engine-test", 5_000);
-        EngineLoop.Options options = new EngineLoop.Options(Strategy.named("safety-first"), false, 32, 500, 5_000);
+        EngineLoop.Options options = new EngineLoop.Options(Strategy.named("safety-first"), fresh, 32, 500, 5_000);
         return new RobotServer(robot, id -> RobotEngine.builder().robotId(id).database(ds).guard(lease::confirm).build(),
                 new JdbcEngineClock(ds, robot), lease, options, false, setAsideOnCorrupt);
     }
@@ -77,6 +81,41 @@ class RobotServerTest {
                 assertThat(rs.next()).isTrue();
                 assertThat(rs.getBoolean(1)).isTrue();
                 assertThat(rs.getLong(2)).isEqualTo(1);
+            }
+        }
+    }
+
+    /**
+     * An engine that starts fresh in the middle of a run (--fresh, or no saved state) numbers its
+     * iterations on from the run's last one: the robot ignores a command of an earlier iteration
+     * than one it ran, so going back to 1 would leave it stopped.
+     */
+    @Test
+    void aFreshStartInTheMiddleOfARunNumbersItsIterationsOnFromTheRunsLastOne() throws Exception {
+        try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
+            DataSource ds = db.dataSource();
+            Schema.apply(ds);
+            try (Connection c = ds.getConnection(); Statement s = c.createStatement()) {
+                for (int robot : new int[] {4, 5}) {
+                    s.executeUpdate("INSERT INTO engine_clock (robot_id, run_id, step, iteration) VALUES (" + robot + ", " + RUN + ", 10, 10)");
+                    s.executeUpdate("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES ("
+                            + robot + ", 10, 320, 'ReachDestination', 'FORWARD 0.3')");
+                }
+                // robot 4: a saved state to discard (--fresh); robot 5: none saved
+                s.executeUpdate("INSERT INTO engine_state (robot_id, iteration, memory_json) VALUES (4, 10, 'not json')");
+            }
+            EngineClock.RobotTick running = new EngineClock.RobotTick(RUN, 11, 352, Timing.SYNC, RunState.RUNNING);
+            assertThat(server(ds, 4, false, true).turn(running, System.nanoTime())).isTrue();
+            assertThat(server(ds, 5, false, false).turn(running, System.nanoTime())).isTrue();
+            try (Connection c = ds.getConnection(); Statement s = c.createStatement();
+                 java.sql.ResultSet rs = s.executeQuery("SELECT e.robot_id, e.iteration, k.iteration FROM engine_state e"
+                         + " JOIN engine_clock k ON k.robot_id = e.robot_id ORDER BY e.robot_id")) {
+                for (int robot : new int[] {4, 5}) {
+                    assertThat(rs.next()).isTrue();
+                    assertThat(rs.getInt(1)).isEqualTo(robot);
+                    assertThat(rs.getLong(2)).as("robot %d's saved iteration", robot).isEqualTo(11);
+                    assertThat(rs.getLong(3)).as("robot %d's published iteration", robot).isEqualTo(11);
+                }
             }
         }
     }

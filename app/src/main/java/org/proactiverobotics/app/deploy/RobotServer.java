@@ -314,6 +314,9 @@ public final class RobotServer {
         boolean sameRun = last.isPresent() && last.get().runId() == robot.runId();
         if (sameRun && (!firstContact || !options.fresh())) {
             boolean resumed = side.resume();
+            if (!resumed) { // the robot ignores commands of iterations before its run's last one
+                side.startFresh(last.get().iteration());
+            }
             long iteration = side.engine().iteration();
             // Saved but not published (rows an older engine left: it published after its commit) served the next step.
             served = last.get().step() + Math.max(0, iteration - last.get().iteration());
@@ -323,7 +326,7 @@ public final class RobotServer {
             LOG.info("engine {}: {} robot run {} at step {} (iteration {})", robotId,
                     resumed ? "resuming" : "no saved state; starting afresh in", robot.runId(), served, iteration);
         } else if (sameRun) {
-            side.startFresh();
+            side.startFresh(last.get().iteration());
             served = last.get().step();
             clock.publish(robot.runId(), served, side.engine().iteration(), lease);
             LOG.info("engine {}: --fresh: saved state discarded; serving robot run {} from step {}", robotId,
@@ -338,6 +341,9 @@ public final class RobotServer {
         }
         if (side.ensureStrategy(options.strategy())) { // a strategy set with the strategy command survives restarts
             LOG.info("engine {}: strategy {} written", robotId, options.strategy().name());
+        } else {
+            LOG.info("engine {}: the strategy already in the table is kept; {} is written only for a robot that has none"
+                    + " (the strategy command changes it)", robotId, options.strategy().name());
         }
         runId = robot.runId();
         firstContact = false;

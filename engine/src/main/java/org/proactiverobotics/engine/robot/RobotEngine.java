@@ -186,8 +186,18 @@ public final class RobotEngine {
 
     /** Starts from StartUp, discarding any saved state of this robot's engine. */
     public void startFresh() {
+        startFresh(0);
+    }
+
+    /**
+     * Starts fresh in the middle of a robot's run: iterations go on after the given one, since the
+     * robot ignores commands of earlier iterations than one it ran.
+     *
+     * @param afterIteration the run's last iteration
+     */
+    public void startFresh(long afterIteration) {
         knownMap.forget();
-        engine.startFresh(new StartUp(order));
+        engine.startFresh(afterIteration, new StartUp(order));
     }
 
     /**

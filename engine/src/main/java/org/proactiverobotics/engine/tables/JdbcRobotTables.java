@@ -477,8 +477,8 @@ public final class JdbcRobotTables
     @Override
     public void send(long iteration, long simTimeMs, String scenario, String command) {
         if (buffering()) {
-            // One command per iteration: sent now, in the iteration's transaction, not with its commit: its id then
-            // comes before any row another connection inserts after it (a newer command wins), as it always did.
+            // One command per iteration: sent now, in the iteration's transaction, not with its commit, so that its
+            // row is written in the order the rules ran, as it always was (the robot finds the newest by iteration).
             try {
                 transaction.sendNow(INSERT_COMMAND, 5, (ps, p) -> bind(ps, p, new Object[] {robotId, iteration, simTimeMs,
                         scenario, command}));

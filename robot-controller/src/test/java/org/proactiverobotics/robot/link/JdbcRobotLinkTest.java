@@ -114,6 +114,11 @@ class JdbcRobotLinkTest {
             assertThat(link.prune(1, new RetentionPolicy(3, 1))).isEqualTo(3);
             assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms), MAX(sim_time_ms) FROM gps_stored_values WHERE robot_id = 1"))
                     .containsExactly(3L, 3 * 32L, 5 * 32L);
+            // Two readings of one time (the start battery level and an answer at 0 ms): cut between them, not both gone.
+            link.writeBattery(1, 0, new BatteryReading(100, false));
+            link.writeBattery(1, 0, new BatteryReading(99.9, false));
+            assertThat(link.prune(1, new RetentionPolicy(1, 1))).isEqualTo(2 + 1); // gps 3 -> 1, battery 2 -> 1
+            assertThat(one(db, "SELECT COUNT(*), MIN(level_pct) FROM battery_level WHERE robot_id = 1")).containsExactly(1L, 99.9);
         }
     }
 
