@@ -38,8 +38,11 @@ public final class LiveMission {
     private int rays;
     private volatile Map<String, Integer> slots = Map.of();
     private volatile JsonObject mission;
-    private long lastCommandId;
-    private long lastFailureId;
+    /** The iteration of the last command read: rows are followed by iteration, since Galera's ids interleave. */
+    private long lastCommandIteration;
+    /** The smallest iteration of this run's commands seen: the engine's pruning only raises the table's, a new run lowers it. */
+    private long firstCommandIteration = Long.MAX_VALUE;
+    private long lastFailureIteration;
     private final TreeMap<Integer, Boolean> reportedCheckpoints = new TreeMap<>();
 
     /**
@@ -92,12 +95,22 @@ public final class LiveMission {
                 }
             }
             slots = strategySlots;
+            if (newRun(c)) { // the commands of the run followed so far were cleared: start over
+                reportedCheckpoints.clear();
+                lastCommandIteration = 0;
+                lastFailureIteration = 0;
+                firstCommandIteration = Long.MAX_VALUE;
+                data = new ReplayData(Map.of(), 0);
+                if (!startOver(c)) {
+                    return 0;
+                }
+            }
             List<long[]> ids = new ArrayList<>();
             List<String[]> texts = new ArrayList<>();
             try (PreparedStatement ps = c.prepareStatement("SELECT id, iteration, sim_time_ms, scenario, command FROM"
-                    + " engine_comments WHERE robot_id = ? AND id > ? ORDER BY id LIMIT " + BATCH)) {
+                    + " engine_comments WHERE robot_id = ? AND iteration > ? ORDER BY robot_id, iteration, id LIMIT " + BATCH)) {
                 ps.setInt(1, robotId);
-                ps.setLong(2, lastCommandId);
+                ps.setLong(2, lastCommandIteration);
                 try (ResultSet rs = ps.executeQuery()) {
                     while (rs.next()) {
                         ids.add(new long[] {rs.getLong(1), rs.getLong(2), rs.getLong(3)});
@@ -108,13 +121,7 @@ public final class LiveMission {
             if (ids.isEmpty()) {
                 return 0;
             }
-            if (ids.get(0)[1] <= data.lastIteration()) { // a new run of the robot: start over
-                reportedCheckpoints.clear();
-                data = new ReplayData(Map.of(), 0);
-                if (!startOver(c)) {
-                    return 0;
-                }
-            }
+            firstCommandIteration = Math.min(firstCommandIteration, ids.get(0)[1]);
             long from = ids.get(0)[2] - READINGS_BEFORE_MS;
             long to = ids.get(ids.size() - 1)[2];
             TreeMap<Long, double[]> gps = readings(c, "SELECT sim_time_ms, x_m, y_m FROM gps_stored_values", from, to, 2);
@@ -122,7 +129,7 @@ public final class LiveMission {
             TreeMap<Long, double[]> battery = readings(c, "SELECT sim_time_ms, level_pct, charging FROM battery_level",
                     from, to, 2);
             TreeMap<Long, double[]> scans = scans(c, from, to);
-            List<TraceEvent> failures = failures(c);
+            List<TraceEvent> failures = failures(c, ids.get(ids.size() - 1)[1]);
             Map<Long, List<TraceEvent>> reached = reachedCheckpoints(c);
             for (int k = 0; k < ids.size(); k++) {
                 long iteration = ids.get(k)[1];
@@ -157,8 +164,33 @@ public final class LiveMission {
                         x, y, yaw, s, b == null ? Double.NaN : b[0], b == null ? Double.NaN : b[0],
                         b != null && b[1] > 0, Double.NaN, Double.NaN, events));
             }
-            lastCommandId = ids.get(ids.size() - 1)[0];
+            lastCommandIteration = ids.get(ids.size() - 1)[1];
             return ids.size();
+        }
+    }
+
+    /**
+     * Whether the robot's commands now belong to a run after the one followed: the table's
+     * iterations went below the first this run showed (a new run clears the commands and counts
+     * from 1; the engine's pruning only drops old ones), or all end before the last one read.
+     */
+    private boolean newRun(Connection c) throws SQLException {
+        if (lastCommandIteration == 0) {
+            return false;
+        }
+        try (PreparedStatement ps = c.prepareStatement(
+                "SELECT MIN(iteration), MAX(iteration) FROM engine_comments WHERE robot_id = ?")) {
+            ps.setInt(1, robotId);
+            try (ResultSet rs = ps.executeQuery()) {
+                if (!rs.next()) {
+                    return false;
+                }
+                long min = rs.getLong(1);
+                if (rs.wasNull()) {
+                    return false; // cleared, the new run's first command not written yet: keep showing the last run
+                }
+                return min < firstCommandIteration || rs.getLong(2) < lastCommandIteration;
+            }
         }
     }
 
@@ -222,15 +254,17 @@ public final class LiveMission {
         return out;
     }
 
-    private List<TraceEvent> failures(Connection c) throws SQLException {
+    private List<TraceEvent> failures(Connection c, long upToIteration) throws SQLException {
         List<TraceEvent> out = new ArrayList<>();
+        // By iteration, as the commands: an iteration's failures commit together, so none comes after its iteration was read.
         try (PreparedStatement ps = c.prepareStatement("SELECT id, iteration, scenario, rule, part, message FROM"
-                + " rule_failures WHERE robot_id = ? AND id > ? ORDER BY id LIMIT 1000")) {
+                + " rule_failures WHERE robot_id = ? AND iteration > ? AND iteration <= ? ORDER BY robot_id, iteration, id")) {
             ps.setInt(1, robotId);
-            ps.setLong(2, lastFailureId);
+            ps.setLong(2, lastFailureIteration);
+            ps.setLong(3, upToIteration);
+            lastFailureIteration = Math.max(lastFailureIteration, upToIteration);
             try (ResultSet rs = ps.executeQuery()) {
                 while (rs.next()) {
-                    lastFailureId = rs.getLong(1);
                     out.add(TraceEvent.ruleFailure(rs.getLong(2), rs.getString(3), rs.getString(4), rs.getString(5),
                             rs.getString(6)));
                 }
