@@ -11,7 +11,8 @@
 -- (robot_id, sim_time_ms, id) and (robot_id, iteration, id) indexes, written as
 -- ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1: H2 walks an index backwards only
 -- when the ORDER BY names its columns (a plain ORDER BY id DESC scans every row of the robot).
--- A database made before these indexes gets them from the application (db.Schema).
+-- A database made before these indexes gets them from the application (db.Schema), which drops
+-- the (robot_id, id) indexes they replace.
 
 -- ======================================================================================
 -- The paper's eight tables

@@ -46,20 +46,33 @@ public final class Schema {
                     execute(statement, "CREATE INDEX " + added[1] + " ON " + added[0] + " (" + added[2] + ")");
                 }
             }
+            boolean h2 = "H2".equalsIgnoreCase(connection.getMetaData().getDatabaseProductName());
+            for (String[] superseded : SUPERSEDED_INDEXES) {
+                if (hasIndex(connection, superseded[0], superseded[1])) { // H2 names indexes per schema, MySQL per table
+                    execute(statement, h2 ? "DROP INDEX " + superseded[1] : "ALTER TABLE " + superseded[0] + " DROP INDEX " + superseded[1]);
+                }
+            }
         }
     }
 
     /**
      * Indexes added to a table after it first shipped: {table, index, columns}, each also in the
      * table's CREATE TABLE (MySQL 8 has no {@code CREATE INDEX IF NOT EXISTS}). The "newest" reads
-     * went from id order to simulated-time and iteration order; the old (robot_id, id) indexes of
-     * such a database stay, unused.
+     * went from id order to simulated-time and iteration order.
      */
     private static final String[][] ADDED_INDEXES = {
         {"gps_stored_values", "idx_gps_time", "robot_id, sim_time_ms, id"},
         {"iudata", "idx_iu_time", "robot_id, sim_time_ms, id"},
         {"battery_level", "idx_battery_time", "robot_id, sim_time_ms, id"},
         {"engine_comments", "idx_comments_iteration", "robot_id, iteration, id"},
+    };
+
+    /** Indexes no read uses any more, {table, index}: dropped from a database made before, so that no write keeps them up. */
+    private static final String[][] SUPERSEDED_INDEXES = {
+        {"gps_stored_values", "idx_gps_newest"},
+        {"iudata", "idx_iu_newest"},
+        {"battery_level", "idx_battery_newest"},
+        {"engine_comments", "idx_comments_newest"},
     };
 
     private static boolean hasIndex(Connection connection, String table, String index) throws SQLException {

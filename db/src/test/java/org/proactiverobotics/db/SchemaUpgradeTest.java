@@ -51,7 +51,7 @@ class SchemaUpgradeTest {
 
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
-    void readingAndCommandTablesMadeWithIdIndexesGetTheTimeAndIterationIndexes(DatabaseKind kind) throws Exception {
+    void readingAndCommandTablesMadeWithIdIndexesGetTheTimeAndIterationIndexesInstead(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind)) {
             db.execute("DROP TABLE gps_stored_values");
             db.execute("CREATE TABLE gps_stored_values (id BIGINT AUTO_INCREMENT PRIMARY KEY, robot_id INT NOT NULL,"
@@ -62,11 +62,11 @@ class SchemaUpgradeTest {
                     + " command VARCHAR(255) NOT NULL, created_at TIMESTAMP(3) NOT NULL DEFAULT CURRENT_TIMESTAMP(3),"
                     + " INDEX idx_comments_newest (robot_id, id))");
             db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 32, 0.5, 1.5)");
-            assertThat(indexes(db, "gps_stored_values")).doesNotContain("idx_gps_time");
+            assertThat(indexes(db, "gps_stored_values")).contains("idx_gps_newest").doesNotContain("idx_gps_time");
             Schema.apply(db.dataSource());
             Schema.apply(db.dataSource()); // and again: harmless
-            assertThat(indexes(db, "gps_stored_values")).contains("idx_gps_time", "idx_gps_newest");
-            assertThat(indexes(db, "engine_comments")).contains("idx_comments_iteration");
+            assertThat(indexes(db, "gps_stored_values")).contains("idx_gps_time").doesNotContain("idx_gps_newest");
+            assertThat(indexes(db, "engine_comments")).contains("idx_comments_iteration").doesNotContain("idx_comments_newest");
             assertThat(indexes(db, "iudata")).contains("idx_iu_time");
             assertThat(indexes(db, "battery_level")).contains("idx_battery_time");
             try (Connection c = db.dataSource().getConnection(); Statement s = c.createStatement();
