@@ -1,9 +1,16 @@
 package org.proactiverobotics.e2e;
 
+import static org.assertj.core.api.Assertions.assertThat;
+
 import ch.qos.logback.classic.Level;
 import ch.qos.logback.classic.Logger;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import javax.sql.DataSource;
+import org.h2.jdbcx.JdbcDataSource;
 import org.proactiverobotics.app.Main;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
@@ -30,5 +37,25 @@ abstract class CommandLineTest {
         } finally {
             root.setLevel(level);
         }
+    }
+
+    /**
+     * Runs a mission with {@code run} into an H2 file database in the folder, the watch's way in.
+     *
+     * @param folder    where the database and the mission's output go
+     * @param worldArgs the world: {@code "--world", NAME-OR-FILE}
+     * @return a data source over that database, for LiveMission
+     */
+    protected DataSource missionInH2File(Path folder, String... worldArgs) {
+        String url = "jdbc:h2:file:" + folder.resolve("db").resolve("p") + ";MODE=MySQL;DATABASE_TO_LOWER=TRUE";
+        List<String> args = new ArrayList<>(List.of("run"));
+        args.addAll(List.of(worldArgs));
+        args.addAll(List.of("--db", url, "--db-user", "sa", "--db-password", "", "--quiet", "--out", folder.resolve("out").toString()));
+        assertThat(run(args.toArray(String[]::new))).as(err.toString()).isZero();
+        JdbcDataSource pool = new JdbcDataSource();
+        pool.setURL(url);
+        pool.setUser("sa");
+        pool.setPassword("");
+        return pool;
     }
 }

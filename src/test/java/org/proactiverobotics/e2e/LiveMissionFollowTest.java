@@ -9,7 +9,7 @@ import java.sql.ResultSet;
 import java.sql.Statement;
 import java.util.ArrayList;
 import java.util.List;
-import org.h2.jdbcx.JdbcDataSource;
+import javax.sql.DataSource;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.proactiverobotics.app.replay.LiveMission;
@@ -38,14 +38,7 @@ class LiveMissionFollowTest extends CommandLineTest {
 
     @Test
     void commandsAreFollowedByIterationThroughInterleavedIdsAndANewRun() throws Exception {
-        String url = "jdbc:h2:file:" + tmp.resolve("db").resolve("p") + ";MODE=MySQL;DATABASE_TO_LOWER=TRUE";
-        int code = run("run", "--world", "reference-arena", "--db", url, "--db-user", "sa", "--db-password", "", "--quiet",
-                "--out", tmp.resolve("out").toString());
-        assertThat(code).as(err.toString()).isZero();
-        JdbcDataSource pool = new JdbcDataSource();
-        pool.setURL(url);
-        pool.setUser("sa");
-        pool.setPassword("");
+        DataSource pool = missionInH2File(tmp, "--world", "reference-arena");
         LiveMission live = new LiveMission(pool, 1);
         while (live.poll() > 0) {
             // every kept command of the mission

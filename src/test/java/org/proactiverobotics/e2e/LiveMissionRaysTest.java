@@ -8,7 +8,6 @@ import com.google.gson.JsonObject;
 import com.google.gson.JsonParser;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import org.h2.jdbcx.JdbcDataSource;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.proactiverobotics.app.replay.LiveMission;
@@ -33,16 +32,7 @@ class LiveMissionRaysTest extends CommandLineTest {
         robot.addProperty("sensorRangeM", 1.5);
         Path file = tmp.resolve("five-rays.json");
         Files.writeString(file, new Gson().toJson(world));
-        String url = "jdbc:h2:file:" + tmp.resolve("db").resolve("p") + ";MODE=MySQL;DATABASE_TO_LOWER=TRUE";
-        int code = run("run", "--world", file.toString(), "--db", url, "--db-user", "sa", "--db-password", "", "--quiet",
-                "--out", tmp.resolve("out").toString());
-        assertThat(code).as(err.toString()).isZero();
-
-        JdbcDataSource pool = new JdbcDataSource();
-        pool.setURL(url);
-        pool.setUser("sa");
-        pool.setPassword("");
-        LiveMission live = new LiveMission(pool, 1);
+        LiveMission live = new LiveMission(missionInH2File(tmp, "--world", file.toString()), 1);
         while (live.poll() > 0) {
             // read every kept command
         }

@@ -100,6 +100,18 @@ public final class ProactiveEngine {
      * @throws CorruptStateException when the saved state cannot be read (never a silent fresh start)
      */
     public void start(Rule... initialRules) {
+        start(0, initialRules);
+    }
+
+    /**
+     * {@link #start(Rule...)} whose iterations, on a fresh start, go on from a given number (see
+     * {@link #startFresh(long, Rule...)}).
+     *
+     * @param afterIteration the iteration a fresh start's first one follows (0 for a new run)
+     * @param initialRules   the rules of the first iteration on a fresh start; ignored on a resume
+     * @throws CorruptStateException when the saved state cannot be read (never a silent fresh start)
+     */
+    public void start(long afterIteration, Rule... initialRules) {
         Optional<SavedState> saved = store.load(robotId);
         if (saved.isPresent()) {
             SavedState state = saved.get();
@@ -108,8 +120,9 @@ public final class ProactiveEngine {
             resumed = true;
             LOG.info("engine {} resumed after iteration {} with {} rules in nextQueue", robotId, iteration, nextQueue.size());
         } else {
-            reset(0, new SharedMemory(memorySlots), List.of(initialRules));
-            LOG.info("engine {} started fresh (no saved state)", robotId);
+            reset(afterIteration, new SharedMemory(memorySlots), List.of(initialRules));
+            LOG.info("engine {} started fresh (no saved state){}", robotId,
+                    afterIteration == 0 ? "" : ", iterations going on after " + afterIteration);
         }
     }
 

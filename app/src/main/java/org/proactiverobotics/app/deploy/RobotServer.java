@@ -313,10 +313,8 @@ public final class RobotServer {
         java.util.Optional<Served> last = clock.served();
         boolean sameRun = last.isPresent() && last.get().runId() == robot.runId();
         if (sameRun && (!firstContact || !options.fresh())) {
-            boolean resumed = side.resume();
-            if (!resumed) { // the robot ignores commands of iterations before its run's last one
-                side.startFresh(last.get().iteration());
-            }
+            // with no saved state, numbering goes on: the robot ignores commands of iterations before its run's last one
+            boolean resumed = side.resume(last.get().iteration());
             long iteration = side.engine().iteration();
             // Saved but not published (rows an older engine left: it published after its commit) served the next step.
             served = last.get().step() + Math.max(0, iteration - last.get().iteration());

@@ -206,8 +206,19 @@ public final class RobotEngine {
      * @return whether a saved state was resumed
      */
     public boolean resume() {
+        return resume(0);
+    }
+
+    /**
+     * Resumes in the middle of a robot's run: from the saved state, or, when there is none, fresh
+     * with iterations going on after the given one (the robot ignores commands of earlier ones).
+     *
+     * @param afterIteration the run's last iteration
+     * @return whether a saved state was resumed
+     */
+    public boolean resume(long afterIteration) {
         knownMap.forget();
-        engine.start(new StartUp(order));
+        engine.start(afterIteration, new StartUp(order));
         return engine.resumed();
     }
 

@@ -11,6 +11,7 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
+import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Writes;
 import org.proactiverobotics.engine.IterationTransaction;
 
@@ -502,37 +503,15 @@ public final class JdbcRobotTables
     public int pruneHistory(int keepRows) {
         int deleted = 0;
         try (Connection c = dataSource.getConnection()) {
-            deleted += pruneOlderThanNewest(c, "engine_comments", "iteration", "", keepRows);
-            deleted += pruneOlderThanNewest(c, "rule_failures", "id", "", keepRows);
-            deleted += pruneOlderThanNewest(c, "sensor_requests", "id", " AND answered_sim_time_ms IS NOT NULL", keepRows);
+            // Commands by iteration, so that the newest never goes; answered requests and rule failures are history.
+            deleted += RobotRows.pruneOlderThanNewest(c, robotId, "engine_comments", "iteration", "", keepRows, 0);
+            deleted += RobotRows.pruneOlderThanNewest(c, robotId, "rule_failures", "id", "", keepRows, 0);
+            deleted += RobotRows.pruneOlderThanNewest(c, robotId, "sensor_requests", "id", " AND answered_sim_time_ms IS NOT NULL",
+                    keepRows, 0);
         } catch (SQLException e) {
             throw failure("pruning the engine history of robot " + robotId, e);
         }
         return deleted;
-    }
-
-    /**
-     * Deletes a robot's rows older than its keep-th newest in the given order. Commands go by
-     * iteration (one per iteration), since ids from different Galera nodes interleave and the newest
-     * command must never go; answered requests and rule failures are history and go by id.
-     */
-    private int pruneOlderThanNewest(Connection c, String table, String order, String filter, int keep) throws SQLException {
-        long boundary;
-        try (PreparedStatement ps = c.prepareStatement("SELECT " + order + " FROM " + table + " WHERE robot_id = ?" + filter
-                + " ORDER BY robot_id DESC, " + (order.equals("id") ? "" : order + " DESC, ") + "id DESC LIMIT 1 OFFSET " + keep)) {
-            ps.setInt(1, robotId);
-            try (ResultSet rs = ps.executeQuery()) {
-                if (!rs.next()) {
-                    return 0;
-                }
-                boundary = rs.getLong(1);
-            }
-        }
-        try (PreparedStatement ps = c.prepareStatement("DELETE FROM " + table + " WHERE robot_id = ? AND " + order + " <= ?" + filter)) {
-            ps.setInt(1, robotId);
-            ps.setLong(2, boundary);
-            return ps.executeUpdate();
-        }
     }
 
     // ---- plumbing ----

@@ -14,6 +14,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
 import org.proactiverobotics.db.RoundTrip;
+import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Writes;
 
 /**
@@ -417,7 +418,7 @@ public final class JdbcRobotLink implements RobotLink {
         return withConnection("pruning reading history", c -> {
             int deleted = 0;
             for (String table : new String[] {"gps_stored_values", "iudata", "battery_level"}) {
-                deleted += pruneOlderThan(c, robotId, table, keep);
+                deleted += RobotRows.pruneOlderThanNewest(c, robotId, table, "sim_time_ms", "", keep, queryTimeoutS);
             }
             // One distance reading = the rows sharing a sim_time_ms; served by idx_ds_time.
             String deleteDistances = "DELETE FROM distance_sensor_data WHERE robot_id = ? AND sim_time_ms <= ?";
@@ -481,34 +482,6 @@ public final class JdbcRobotLink implements RobotLink {
     @FunctionalInterface
     private interface SqlWork<T> {
         T run(Connection c) throws SQLException;
-    }
-
-    /**
-     * Deletes a robot's readings older than its keep-th newest, by simulated time then id: two
-     * readings of one time (the start battery level and an answer at 0 ms) are cut between them.
-     */
-    private int pruneOlderThan(Connection c, int robotId, String table, int keep) throws SQLException {
-        long cutoffMs;
-        long cutoffId;
-        try (PreparedStatement ps = prepare(c, "SELECT robot_id, sim_time_ms, id FROM " + table
-                + " WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1 OFFSET " + keep)) {
-            ps.setInt(1, robotId);
-            try (ResultSet rs = ps.executeQuery()) {
-                if (!rs.next()) {
-                    return 0;
-                }
-                cutoffMs = rs.getLong(2);
-                cutoffId = rs.getLong(3);
-            }
-        }
-        try (PreparedStatement ps = prepare(c, "DELETE FROM " + table
-                + " WHERE robot_id = ? AND (sim_time_ms < ? OR sim_time_ms = ? AND id <= ?)")) {
-            ps.setInt(1, robotId);
-            ps.setLong(2, cutoffMs);
-            ps.setLong(3, cutoffMs);
-            ps.setLong(4, cutoffId);
-            return ps.executeUpdate();
-        }
     }
 
     private int pruneBy(Connection c, int robotId, String findCutoff, String delete) throws SQLException {
