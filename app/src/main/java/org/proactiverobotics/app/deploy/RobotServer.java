@@ -60,6 +60,8 @@ public final class RobotServer {
     private long runId = -1;
     private long served;
     private boolean firstContact = true;
+    /** Whether this engine said it keeps the strategy already in the table. */
+    private boolean strategyKeptSaid;
     private boolean finishedLogged;
     private boolean waitingLogged;
     private long nextStatusNanos;
@@ -339,7 +341,8 @@ public final class RobotServer {
         }
         if (side.ensureStrategy(options.strategy())) { // a strategy set with the strategy command survives restarts
             LOG.info("engine {}: strategy {} written", robotId, options.strategy().name());
-        } else {
+        } else if (!strategyKeptSaid) { // once: an engine adopts the robot's old run, then its new one
+            strategyKeptSaid = true;
             LOG.info("engine {}: the strategy already in the table is kept; {} is written only for a robot that has none"
                     + " (the strategy command changes it)", robotId, options.strategy().name());
         }
