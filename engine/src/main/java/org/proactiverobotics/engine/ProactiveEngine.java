@@ -29,7 +29,7 @@ import org.slf4j.LoggerFactory;
  * ProactiveEngine engine = ProactiveEngine.builder()
  *         .robotId(1)
  *         .algorithm(Algorithm.LAZY)
- *         .store(new JdbcStateStore(dataSource))
+ *         .store(new JdbcStateStore(dataSource))                             // from engine.persistence
  *         .service(SensorDao.class, new SensorDao(dataSource))
  *         .build();
  * engine.start(new StartUp(List.of("DataAcquisition", "BatteryMonitor")));  // resumes when a state is saved
