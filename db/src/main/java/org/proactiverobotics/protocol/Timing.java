@@ -16,12 +16,12 @@ public enum Timing {
     }
 
     /**
-     * @param label the word as written ({@link #label()})
+     * @param label the word as written ({@link #label()}), in any case
      * @return the timing, or empty when the word is unknown
      */
     public static Optional<Timing> of(String label) {
         for (Timing t : values()) {
-            if (t.label().equals(label)) {
+            if (t.label().equalsIgnoreCase(label)) {
                 return Optional.of(t);
             }
         }

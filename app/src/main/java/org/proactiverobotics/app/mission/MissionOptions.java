@@ -26,7 +26,20 @@ public record MissionOptions(WorldSpec world, String jdbcUrl, String user, Strin
         /** The shared database (the paper's layer): each side with a pool of its own. */
         JDBC,
         /** In-process memory ({@link org.proactiverobotics.app.link.DirectLink}): no database at all. */
-        DIRECT
+        DIRECT;
+
+        /**
+         * @param word {@code jdbc} or {@code direct}, in any case
+         * @return the link, or null for another word
+         */
+        public static Link of(String word) {
+            for (Link link : values()) {
+                if (link.name().equalsIgnoreCase(word)) {
+                    return link;
+                }
+            }
+            return null;
+        }
     }
 
     /** Checks the link. */
