@@ -118,7 +118,7 @@ public final class RobotCommand implements Callable<Integer> {
 
     private int runMission(WorldSpec worldSpec, OutputDirectory output, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
         Path outDir = output.path();
-        Timing mode = Timing.of(timing).orElseThrow(); // checked by validate()
+        Timing mode = Timing.of(timing.toLowerCase(Locale.ROOT)).orElseThrow(); // checked by problem()
         stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), DbOptions.redacted(db.url()), mode.label());
         stdout.flush();
         MissionReport report;
@@ -161,7 +161,7 @@ public final class RobotCommand implements Callable<Integer> {
         if (dbProblem != null) {
             return dbProblem;
         }
-        if (Timing.of(timing).isEmpty()) {
+        if (Timing.of(timing.toLowerCase(Locale.ROOT)).isEmpty()) { // any case here; robot_clock holds the lower-case word
             return "--timing must be sync or realtime: " + timing;
         }
         if (noise.problem() != null) {

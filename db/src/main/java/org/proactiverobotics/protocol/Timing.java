@@ -16,12 +16,12 @@ public enum Timing {
     }
 
     /**
-     * @param label the word as written ({@link #label()}), in any case
+     * @param label the word as written ({@link #label()})
      * @return the timing, or empty when the word is unknown
      */
     public static Optional<Timing> of(String label) {
         for (Timing t : values()) {
-            if (t.label().equalsIgnoreCase(label)) {
+            if (t.label().equals(label)) {
                 return Optional.of(t);
             }
         }
