@@ -15,7 +15,7 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * @param strategy the strategy to start with
  * @param robotId  the robot's id in the shared tables
  * @param link     how the engine and the robot talk
- * @param plugins  scenarios from outside, started after the built-in ones that suggest
+ * @param plugins  scenarios from outside, started where RobotEngine.startOrder puts them (before ObstacleAvoidance)
  * @param noise    the sensors' noise, drawn from the world's seed
  */
 public record MissionOptions(WorldSpec world, String jdbcUrl, String user, String password, Strategy strategy, int robotId,
