@@ -15,6 +15,8 @@ final class Suggestions {
 
     /** At most this many edits (a letter left out, added, changed, or two swapped) from the name typed. */
     private static final int MAX_EDITS = 2;
+    /** Names shorter than this ({@code -h}) are never guessed at, nor guessed: any letter is one edit from another. */
+    private static final int MIN_LETTERS = 2;
 
     private Suggestions() {
     }
@@ -22,14 +24,18 @@ final class Suggestions {
     /**
      * @param typed what was typed ({@code --wrld}, {@code --wrld=x}, {@code swep})
      * @param names the names there are
-     * @return the names at most two edits away (one for a name of up to four letters), closest first
+     * @return the names of two letters or more at most two edits away (one for a word of up to five
+     *         letters), closest first
      */
     static List<String> closest(String typed, Collection<String> names) {
         String word = bare(typed);
+        if (word.length() < MIN_LETTERS) {
+            return List.of();
+        }
         int most = Math.min(MAX_EDITS, Math.max(1, word.length() / 3));
         List<String> near = new ArrayList<>();
         for (String name : names) {
-            if (edits(word, bare(name)) <= most && !near.contains(name)) {
+            if (bare(name).length() >= MIN_LETTERS && edits(word, bare(name)) <= most && !near.contains(name)) {
                 near.add(name);
             }
         }
