@@ -100,12 +100,13 @@ public final class SummaryHtml {
      */
     static String page(List<Row> rows, String lead) throws IOException {
         boolean kinds = rows.stream().anyMatch(r -> r.kind().isPresent());
-        StringBuilder figures = new StringBuilder();
         List<MissionGroup> strategyNoise = MissionGroup.crossed(rows, List.of(Factor.STRATEGY, Factor.NOISE));
-        charts(figures, strategyNoise, "strategy and noise", "strategy-noise");
-        if (kinds) {
-            charts(figures, MissionGroup.crossed(rows, List.of(Factor.KIND, Factor.STRATEGY)), "world kind and strategy",
-                    "kind-strategy");
+        List<String> byStrategyNoise = charts(strategyNoise, "strategy and noise", "strategy-noise");
+        List<String> byKind = kinds ? charts(MissionGroup.crossed(rows, List.of(Factor.KIND, Factor.STRATEGY)),
+                "world kind and strategy", "kind-strategy") : List.of();
+        StringBuilder figures = new StringBuilder();
+        for (int i = 0; i < byStrategyNoise.size(); i++) { // a metric by strategy and noise beside the same by world kind
+            figures.append(byStrategyNoise.get(i)).append(byKind.isEmpty() ? "" : byKind.get(i));
         }
         StringBuilder tables = new StringBuilder();
         tables.append("<h2>Strategy × noise</h2>\n");
@@ -136,8 +137,8 @@ public final class SummaryHtml {
     private static final String KINDS_UNKNOWN = "No world of this sweep was drawn by <code>generate</code> (named"
             + " <code>&lt;kind&gt;-&lt;NNN&gt;</code>), so there is no table by world kind.";
 
-    /** Success rate, simulated time and distance of the groups, each chart in a figure with its save link. */
-    private static void charts(StringBuilder out, List<MissionGroup> groups, String by, String slug) {
+    /** @return success rate, simulated time and distance of the groups, each chart in a figure with its save link */
+    private static List<String> charts(List<MissionGroup> groups, String by, String slug) {
         List<String> series = new ArrayList<>(new LinkedHashSet<>(groups.stream().map(g -> g.values().get(1)).toList()));
         List<SvgBarChart.Bar> success = new ArrayList<>();
         List<SvgBarChart.Bar> time = new ArrayList<>();
@@ -153,12 +154,12 @@ public final class SummaryHtml {
             time.add(spreadBar(group, name, who, g.simTimeS(), "s"));
             distance.add(spreadBar(group, name, who, g.distanceM(), "m"));
         }
-        figure(out, "success-by-" + slug, SvgBarChart.render("Success rate by " + by,
-                "accomplished, % of missions (whiskers: 95 % Wilson interval; label: k/n)", success, 100, series));
-        figure(out, "sim-time-by-" + slug, SvgBarChart.render("Simulated time by " + by + ", accomplished missions",
-                "simulated time, s (mean; whiskers: ± 1 sd; label: n accomplished)", time, Double.NaN, series));
-        figure(out, "distance-by-" + slug, SvgBarChart.render("Distance by " + by + ", accomplished missions",
-                "distance travelled, m (mean; whiskers: ± 1 sd; label: n accomplished)", distance, Double.NaN, series));
+        return List.of(figure("success-by-" + slug, SvgBarChart.render("Success rate by " + by,
+                "accomplished, % of missions (whiskers: 95 % Wilson interval; label: k/n)", success, 100, series)),
+                figure("sim-time-by-" + slug, SvgBarChart.render("Simulated time by " + by + ", accomplished missions",
+                "simulated time, s (mean; whiskers: ± 1 sd; label: n accomplished)", time, Double.NaN, series)),
+                figure("distance-by-" + slug, SvgBarChart.render("Distance by " + by + ", accomplished missions",
+                "distance travelled, m (mean; whiskers: ± 1 sd; label: n accomplished)", distance, Double.NaN, series)));
     }
 
     private static SvgBarChart.Bar spreadBar(String group, String name, String who, MissionGroup.MeanSd m, String unit) {
@@ -168,13 +169,13 @@ public final class SummaryHtml {
                 who + (m.count() == 0 ? "no mission accomplished" : m.shown(1) + " " + unit + " over " + m.count() + " accomplished"));
     }
 
-    /** A chart inline, and a link that downloads the same SVG as a file of its own. */
-    private static void figure(StringBuilder out, String name, String svg) {
+    /** @return a chart inline, and a link that downloads the same SVG as a file of its own */
+    private static String figure(String name, String svg) {
         String file = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg + "\n";
         String href = "data:image/svg+xml;base64," + Base64.getEncoder().encodeToString(file.getBytes(StandardCharsets.UTF_8));
-        out.append("<figure class=\"plot\" id=\"").append(name).append("\">").append(svg)
+        return new StringBuilder().append("<figure class=\"plot\" id=\"").append(name).append("\">").append(svg)
                 .append("<figcaption><a class=\"save\" download=\"").append(name).append(".svg\" href=\"").append(href)
-                .append("\">save as SVG</a> (").append(name).append(".svg)</figcaption></figure>\n");
+                .append("\">save as SVG</a> (").append(name).append(".svg)</figcaption></figure>\n").toString();
     }
 
     /** A table of groups: their factors' values, then the same figures for each. */
