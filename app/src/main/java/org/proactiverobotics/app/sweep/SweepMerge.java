@@ -140,7 +140,7 @@ public final class SweepMerge {
     private static SummaryHtml.Row summaryRow(CSVRecord r, Path shard, Path out) {
         try {
             return new SummaryHtml.Row(missionNumber(shard.resolve("results.csv"), r.get("mission")), r.get("world"),
-                    r.get("worldKind"), r.get("strategy"), r.get("noise"), Long.parseLong(r.get("seed")), r.get("outcome"),
+                    r.get("strategy"), r.get("noise"), Long.parseLong(r.get("seed")), r.get("outcome"),
                     Boolean.parseBoolean(r.get("success")), r.get("checkpointsReached") + "/" + r.get("checkpointsTotal"),
                     Double.parseDouble(r.get("simTimeS")), Double.parseDouble(r.get("wallTimeS")),
                     Double.parseDouble(r.get("distanceM")), Integer.parseInt(r.get("collisions")),
