@@ -53,6 +53,7 @@ public final class Mission {
     private Consumer<Simulation> stepHook = sim -> { };
     private UnaryOperator<EngineTables> engineTables = UnaryOperator.identity();
     private StepTracer tracer;
+    private final BeliefTracer belief = new BeliefTracer();
     private SeenReadings seen;
     private String drivingScenario = "none";
     private Map<String, Integer> slots = Map.of();
@@ -135,7 +136,7 @@ public final class Mission {
     /** The engine's standard wiring, with this mission's robot, plug-ins, trace and table wrapper. */
     private RobotEngine.Builder engine() {
         return RobotEngine.builder().robotId(options.robotId()).drive(profile(options.world()))
-                .plugins(options.plugins()).observer(this::decided)
+                .plugins(options.plugins()).observer(this::decided).belief(belief)
                 .decorate(tables -> SeenReadings.wrap(engineTables.apply(tables), r -> seen = r));
     }
 
@@ -149,7 +150,7 @@ public final class Mission {
         });
         ReplayData replay = new ReplayData(slots, sim.robot().distanceSensors().size());
         try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"))) {
-            this.tracer = new StepTracer(sim, traceWriter, replay);
+            this.tracer = new StepTracer(sim, traceWriter, replay, belief);
             tracer.seen(seen);
             tracer.slots(slots);
             MissionReport report = loop(sim, engine, controller);

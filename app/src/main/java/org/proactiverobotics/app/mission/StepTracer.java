@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.SeenReadings;
+import org.proactiverobotics.app.replay.TraceBelief;
 import org.proactiverobotics.app.replay.TraceEvent;
 import org.proactiverobotics.app.replay.TraceStep;
 import org.proactiverobotics.engine.CommandArray;
@@ -22,7 +23,7 @@ import org.proactiverobotics.sim2d.Simulation;
 
 /**
  * Puts together, for each control step of the one-process mission, the engine's decision, what
- * its rules saw, the robot's ground truth and the step's events, and hands the
+ * its rules saw and believed ({@link BeliefTracer}), the robot's ground truth and the step's events, and hands the
  * {@link TraceStep} to trace.jsonl and to the replay.
  */
 final class StepTracer {
@@ -30,6 +31,7 @@ final class StepTracer {
     private final Simulation sim;
     private final TraceWriter trace;
     private final ReplayData replay;
+    private final BeliefTracer belief;
     private SeenReadings seen;
     private Map<String, Integer> slots = Map.of();
     private Map<String, Integer> priorities = Map.of();
@@ -55,10 +57,11 @@ final class StepTracer {
     private double left;
     private double right;
 
-    StepTracer(Simulation sim, TraceWriter trace, ReplayData replay) {
+    StepTracer(Simulation sim, TraceWriter trace, ReplayData replay, BeliefTracer belief) {
         this.sim = sim;
         this.trace = trace;
         this.replay = replay;
+        this.belief = belief;
         GroundTruth t = sim.groundTruth();
         this.checkpoints = t.checkpointsReached();
         this.recharges = t.recharges();
@@ -138,6 +141,7 @@ final class StepTracer {
         if (decidedIteration < 0) {
             return; // StartUp's and the meta-rules' iterations decide nothing: their events go with the next line
         }
+        TraceBelief believed = belief.take(decidedIteration, winner, pending);
         TraceStep step = new TraceStep(decidedIteration, simTimeMs, suggestions, winner, command,
                 priorities(memory.priorityArray()), x, y, heading,
                 seen == null || seen.gps() == null ? Double.NaN : seen.gps().xM(),
@@ -145,7 +149,7 @@ final class StepTracer {
                 seen == null || seen.heading() == null ? Double.NaN : seen.heading().yawRad(),
                 seen == null || seen.scan() == null ? null : scan(seen.scan()),
                 seen == null || seen.battery() == null ? Double.NaN : seen.battery().levelPct(),
-                battery, chargingAtStep, left, right, List.copyOf(pending));
+                battery, chargingAtStep, left, right, List.copyOf(pending), believed);
         pending.clear();
         decidedIteration = -1;
         trace.write(step);

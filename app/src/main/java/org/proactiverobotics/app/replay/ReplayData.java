@@ -12,8 +12,9 @@ import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * The steps of a mission in columns, as replay.html reads them: one primitive array per field
- * (integers in mm, mrad, mm/s, hundredths of %), strings (scenarios, commands, PriorityArrays) once
- * in a dictionary. A 20-minute mission (37 500 iterations) is a few MB, read by the page at once.
+ * (integers in mm, mrad, mm/s, hundredths of %), strings (scenarios, commands, PriorityArrays,
+ * reasons) once in a dictionary; the engine's belief as a pose column carried forward and, where
+ * they changed, rows of [step, ...] for routes (mm), map deltas (cells) and reasons. A 20-minute mission (37 500 iterations) is a few MB, read by the page at once.
  * Thread-safe: the live view appends while the HTTP server reads.
  */
 public final class ReplayData {
@@ -25,6 +26,21 @@ public final class ReplayData {
     private final Map<String, Integer> stringIds = new HashMap<>();
     private final List<String> slotScenarios = new ArrayList<>();
     private final List<JsonObject> events = new ArrayList<>();
+    /** The engine's belief, where it changed: [step, x0, y0, x1, y1, ...] in mm per new route. */
+    private final List<int[]> routes = new ArrayList<>();
+    /** [step, ix, iy, state, ...] per step whose map cells changed. */
+    private final List<int[]> mapDeltas = new ArrayList<>();
+    /** [step, string id] per step with a reason. */
+    private final List<int[]> reasons = new ArrayList<>();
+    /** The pose the engine believed, carried forward (mm, mrad; NONE: not said yet). */
+    private int lastBeliefX = NONE;
+    private int lastBeliefY = NONE;
+    private int lastBeliefHeading = NONE;
+    /** Whether any step carried a believed pose: pages without one (the robot process, the live view) leave the columns out. */
+    private boolean anyBelief;
+    private int[] beliefX = new int[1024];
+    private int[] beliefY = new int[1024];
+    private int[] beliefHeading = new int[1024];
     private int size;
     private long[] iteration = new long[1024];
     private long[] simTimeMs = new long[1024];
@@ -108,6 +124,33 @@ public final class ReplayData {
             String text = s.suggestions() == null ? null : s.suggestions().get(e.getKey());
             e.getValue()[i] = text == null ? -1 : id(text);
         }
+        TraceBelief b = s.belief();
+        if (b != null && b.pose() != null) {
+            lastBeliefX = milli(b.pose()[0]);
+            lastBeliefY = milli(b.pose()[1]);
+            lastBeliefHeading = milli(b.pose()[2]);
+            anyBelief = true;
+        }
+        beliefX[i] = lastBeliefX;
+        beliefY[i] = lastBeliefY;
+        beliefHeading[i] = lastBeliefHeading;
+        if (b != null && b.route() != null) {
+            int[] r = new int[1 + b.route().length];
+            r[0] = i;
+            for (int k = 0; k < b.route().length; k++) {
+                r[k + 1] = milli(b.route()[k]);
+            }
+            routes.add(r);
+        }
+        if (b != null && b.mapDelta() != null) {
+            int[] d = new int[1 + b.mapDelta().length];
+            d[0] = i;
+            System.arraycopy(b.mapDelta(), 0, d, 1, b.mapDelta().length);
+            mapDeltas.add(d);
+        }
+        if (b != null && b.reason() != null) {
+            reasons.add(new int[] {i, id(b.reason())});
+        }
         for (TraceEvent ev : s.events()) {
             JsonObject o = ev.toJson();
             o.addProperty("step", i);
@@ -148,10 +191,33 @@ public final class ReplayData {
         JsonObject sug = new JsonObject();
         suggestions.forEach((scenario, ids) -> sug.add(scenario, ints(ids, from, n)));
         o.add("suggestions", sug);
+        if (anyBelief) {
+            o.add("beliefX", ints(beliefX, from, n));
+            o.add("beliefY", ints(beliefY, from, n));
+            o.add("beliefHeading", ints(beliefHeading, from, n));
+        }
+        o.add("routes", since(routes, from));
+        o.add("mapDeltas", since(mapDeltas, from));
+        o.add("reasons", since(reasons, from));
         JsonArray ev = new JsonArray();
         events.stream().filter(e -> e.get("step").getAsInt() >= from).forEach(ev::add);
         o.add("events", ev);
         return o;
+    }
+
+    /** The sparse rows ([step, ...]) of the steps from {@code from} on. */
+    private static JsonArray since(List<int[]> rows, int from) {
+        JsonArray a = new JsonArray();
+        for (int[] r : rows) {
+            if (r[0] >= from) {
+                JsonArray row = new JsonArray(r.length);
+                for (int v : r) {
+                    row.add(v);
+                }
+                a.add(row);
+            }
+        }
+        return a;
     }
 
     private int id(String s) {
@@ -198,6 +264,9 @@ public final class ReplayData {
         winner = Arrays.copyOf(winner, n);
         command = Arrays.copyOf(command, n);
         priorities = Arrays.copyOf(priorities, n);
+        beliefX = Arrays.copyOf(beliefX, n);
+        beliefY = Arrays.copyOf(beliefY, n);
+        beliefHeading = Arrays.copyOf(beliefHeading, n);
         suggestions.replaceAll((k, v) -> Arrays.copyOf(v, n));
     }
 

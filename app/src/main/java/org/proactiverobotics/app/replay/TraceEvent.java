@@ -4,8 +4,8 @@ import com.google.gson.JsonObject;
 import java.util.Objects;
 
 /**
- * Something that happened at one iteration and that a replay can jump to: a checkpoint reached,
- * a recharge started or finished, a collision, a rule failure, a fail-safe action.
+ * Something that happened at one iteration and that a replay can jump to: a checkpoint reached or
+ * declared unreachable, a recharge started or finished, a collision, a rule failure, a fail-safe action.
  *
  * @param type   one of the {@code TYPE_} constants
  * @param detail the event's own fields (index, scenario, rule, part, message, action), never null
@@ -14,6 +14,8 @@ public record TraceEvent(String type, JsonObject detail) {
 
     /** The robot's centre came within a checkpoint's radius, in order (ground truth). */
     public static final String CHECKPOINT = "checkpointReached";
+    /** The engine declared a checkpoint unreachable (no route to it on its map): the mission ends. */
+    public static final String CHECKPOINT_UNREACHABLE = "checkpointUnreachable";
     /** The robot started charging at the station. */
     public static final String RECHARGE_STARTED = "rechargeStarted";
     /** The robot stopped charging. */
@@ -36,6 +38,13 @@ public record TraceEvent(String type, JsonObject detail) {
         JsonObject d = new JsonObject();
         d.addProperty("index", index);
         return new TraceEvent(CHECKPOINT, d);
+    }
+
+    /** @return checkpoint {@code index} (from 0, in the world's order) declared unreachable by the engine */
+    public static TraceEvent checkpointUnreachable(int index) {
+        JsonObject d = new JsonObject();
+        d.addProperty("index", index);
+        return new TraceEvent(CHECKPOINT_UNREACHABLE, d);
     }
 
     /** @return an event with no fields of its own */

@@ -31,15 +31,29 @@ import java.util.Map;
  * @param leftMps      ground-truth left wheel speed, m/s
  * @param rightMps     ground-truth right wheel speed, m/s
  * @param events       what happened during this iteration's control step, in order
+ * @param belief       what the engine believed, as far as it changed (null: nothing known, the robot process)
  */
 public record TraceStep(long iteration, long simTimeMs, Map<String, String> suggestions, String winner,
                         String command, Map<String, Integer> priorities, double xM, double yM, double headingRad,
                         double gpsXM, double gpsYM, double yawRad, double[] scanM, double seenBattery,
                         double batteryPct, boolean charging, double leftMps, double rightMps,
-                        List<TraceEvent> events) {
+                        List<TraceEvent> events, TraceBelief belief) {
 
-    /** The version of trace.jsonl's line format; 1 had only iteration, simTimeS, suggestions, winner, command. */
-    public static final int SCHEMA_VERSION = 2;
+    /**
+     * The version of trace.jsonl's line format; 1 had only iteration, simTimeS, suggestions, winner,
+     * command; 3 added the optional belief, route, mapDelta and reason.
+     */
+    public static final int SCHEMA_VERSION = 3;
+
+    /** A step without the engine's belief (the robot process, or a caller that has none). */
+    public TraceStep(long iteration, long simTimeMs, Map<String, String> suggestions, String winner,
+                     String command, Map<String, Integer> priorities, double xM, double yM, double headingRad,
+                     double gpsXM, double gpsYM, double yawRad, double[] scanM, double seenBattery,
+                     double batteryPct, boolean charging, double leftMps, double rightMps,
+                     List<TraceEvent> events) {
+        this(iteration, simTimeMs, suggestions, winner, command, priorities, xM, yM, headingRad, gpsXM, gpsYM, yawRad,
+                scanM, seenBattery, batteryPct, charging, leftMps, rightMps, events, null);
+    }
     /** Writes an event as JsonElement.toString() would: nulls kept, no HTML escaping. */
     private static final Gson EVENTS = new GsonBuilder().serializeNulls().disableHtmlEscaping().create();
 
@@ -106,6 +120,9 @@ public record TraceStep(long iteration, long simTimeMs, Map<String, String> sugg
             EVENTS.toJson(e.toJson(), w);
         }
         w.endArray();
+        if (belief != null) {
+            belief.write(w);
+        }
         w.endObject();
     }
 
@@ -123,7 +140,7 @@ public record TraceStep(long iteration, long simTimeMs, Map<String, String> sugg
     }
 
     /** {@link #mm} as JSON writes it, without Double.toString (the trace's top cost). */
-    private static String mmText(double v) {
+    static String mmText(double v) {
         return Decimals.of(Math.round(v * 1000.0), 3);
     }
 

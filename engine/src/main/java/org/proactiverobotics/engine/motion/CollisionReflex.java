@@ -1,6 +1,7 @@
 package org.proactiverobotics.engine.motion;
 
 import java.util.Arrays;
+import java.util.Locale;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
@@ -71,6 +72,30 @@ public final class CollisionReflex {
     private double[] hitY = new double[0];
     private long[] hitMs = new long[0];
 
+    /** What made the last veto, for its reason in words: one of the {@code CAUSE_} constants (not saved). */
+    private transient int cause;
+    /** The thing that made it: a hit's or an occupied cell's point (metres), or the flank reading's distance from the rim. */
+    private transient double causeX;
+    private transient double causeY;
+    /** The robot's pose and the reach the last veto was judged with, metres and radians. */
+    private transient double vetoX;
+    private transient double vetoY;
+    private transient double vetoYaw;
+    private transient double vetoReachM;
+    private transient double vetoRadiusM;
+    /** Whether the guarded flank's wall converged (else the command turned toward it). */
+    private transient boolean flankClosing;
+    /** The thing found by the last {@link #hitsWithin} that answered true (cause, point). */
+    private transient int foundCause;
+    private transient double foundX;
+    private transient double foundY;
+
+    private static final int CAUSE_NONE = 0;
+    private static final int CAUSE_HIT = 1;
+    private static final int CAUSE_CELL = 2;
+    private static final int CAUSE_FLANK = 3;
+    private static final int CAUSE_BACKING = 4;
+
     /** @return whether the reflex vetoed the last command it vetted */
     public boolean engaged() {
         return turning != 0;
@@ -111,9 +136,15 @@ public final class CollisionReflex {
                       DriveProfile profile, Clearance c) {
         double radiusM = profile.axleWidthM() / 2;
         remember(s, xM, yM, yawRad, radiusM);
+        cause = CAUSE_NONE;
+        vetoX = xM;
+        vetoY = yM;
+        vetoYaw = yawRad;
+        vetoRadiusM = radiusM;
         if (backing > 0) {
             String back = backOff(map, xM, yM, yawRad, profile);
             if (back != null) {
+                cause = CAUSE_BACKING;
                 return back;
             }
         }
@@ -132,14 +163,25 @@ public final class CollisionReflex {
             return null; // turning on the spot or backing off: the rays look ahead only
         }
         double reachM = c.imminentM() * Math.min(1.0, speed / profile.maxSpeedMps()) + SIDE_MARGIN_M;
+        vetoReachM = reachM;
+        double[] flanks = lastFlankM.clone();
         int guarded = flankGuard(s, turnRate);
         if (guarded != 0) {
             turning = -guarded; // away from the flank it would close on
+            cause = CAUSE_FLANK;
+            causeX = guarded > 0 ? lastFlankM[0] : lastFlankM[1];
+            causeY = guarded;
+            flankClosing = closing(causeX, flanks[guarded > 0 ? 0 : 1]);
         }
         if (guarded == 0 && !hitsWithin(map, xM, yM, yawRad, radiusM, speed, turnRate, reachM, false)) {
             turning = 0;
             vetoes = 0;
             return null;
+        }
+        if (guarded == 0) {
+            cause = foundCause;
+            causeX = foundX;
+            causeY = foundY;
         }
         String around = aroundArc(s, map, xM, yM, yawRad, radiusM, profile, c, speed, turnRate, guarded);
         if (around != null) {
@@ -150,6 +192,7 @@ public final class CollisionReflex {
             backing = BACK_ITERATIONS;
             String back = backOff(map, xM, yM, yawRad, profile);
             if (back != null) {
+                cause = CAUSE_BACKING;
                 return back;
             }
         }
@@ -235,16 +278,69 @@ public final class CollisionReflex {
                     double ax = hitX[k] - xM;
                     double ay = hitY[k] - yM;
                     if (d2 < ax * ax + ay * ay - 1e-6) {
+                        found(CAUSE_HIT, hitX[k], hitY[k]);
                         return true;
                     }
                 }
             }
             if (map != null && (map.occupiedApproached(xM, yM, px, py, keep)
                     || unseenToo && map.unknownApproached(xM, yM, px, py, keep))) {
+                foundCell(map, px, py, keep);
                 return true;
             }
         }
         return false;
+    }
+
+    private void found(int kind, double x, double y) {
+        foundCause = kind;
+        foundX = x;
+        foundY = y;
+    }
+
+    /** Notes the occupied cell nearest a point of the arc, within {@code keepM} of it (the point itself when none: an unseen cell). */
+    private void foundCell(OccupancyMap map, double px, double py, double keepM) {
+        double best = Double.POSITIVE_INFINITY;
+        found(CAUSE_CELL, px, py);
+        for (int j = OccupancyMap.cell(py - keepM); j <= OccupancyMap.cell(py + keepM); j++) {
+            for (int i = OccupancyMap.cell(px - keepM); i <= OccupancyMap.cell(px + keepM); i++) {
+                double d = Math.hypot(OccupancyMap.centre(i) - px, OccupancyMap.centre(j) - py);
+                if (d < best && d < keepM && map.get(i, j) == OccupancyMap.OCCUPIED) {
+                    best = d;
+                    found(CAUSE_CELL, OccupancyMap.centre(i), OccupancyMap.centre(j));
+                }
+            }
+        }
+    }
+
+    /**
+     * Why the last vetted command was replaced, in words, saying only what the reflex knows: where
+     * the hit or the map's occupied cell lies from the body (distance from its rim, bearing from its
+     * heading), the braking reach it was judged with, a guarded flank, or a back-off.
+     *
+     * @param intended the command vetted (null: none)
+     * @return the reason, or null when the last command was not replaced
+     */
+    public String reason(String intended) {
+        String what = "vetoed " + (intended == null ? "no command" : intended) + ": ";
+        switch (cause) {
+            case CAUSE_HIT:
+            case CAUSE_CELL:
+                double d = Math.max(0.0, Math.hypot(causeX - vetoX, causeY - vetoY) - vetoRadiusM);
+                double bearing = Math.toDegrees(Math.atan2(causeY - vetoY, causeX - vetoX) - vetoYaw);
+                bearing = bearing - 360.0 * Math.floor((bearing + 180.0) / 360.0);
+                return String.format(Locale.ROOT, "%s%s %.2f m away at %d°, within braking reach %.2f m", what,
+                        cause == CAUSE_HIT ? "obstacle a ray hit" : "occupied map cell", d, Math.round(bearing), vetoReachM);
+            case CAUSE_FLANK:
+                return String.format(Locale.ROOT, "%sobstacle %.2f m off the %s flank (rays at 60° to 120°), %s", what, causeX,
+                        causeY > 0 ? "left" : "right",
+                        flankClosing ? "closing in" : "and the command turns toward it");
+            case CAUSE_BACKING:
+                return String.format(Locale.ROOT, "%sbacking off %.2f m: the way stayed blocked through %d vetoes in a row",
+                        what, BACK_REACH_M, STUCK_VETOES);
+            default:
+                return null;
+        }
     }
 
     /**

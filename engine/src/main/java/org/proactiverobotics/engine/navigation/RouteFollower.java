@@ -59,6 +59,9 @@ public final class RouteFollower {
     private transient double[] legM;
     private transient double targetX;
     private transient double targetY;
+    /** Whether the last step planned (a route, or none found): the route may have changed. */
+    private transient boolean planned;
+    private static final double[] NONE = new double[0];
 
     /**
      * One step: plans if needed and chooses what to drive at.
@@ -79,6 +82,7 @@ public final class RouteFollower {
                 || blockedAhead(map, x, y, nearest, robotRadiusM - slackM)
                 || !inSight(map, x, y, xs[Math.min(nearest + 1, xs.length - 1)], ys[Math.min(nearest + 1, xs.length - 1)], sightM, seenRoute)
                         && !inSight(map, x, y, xs[nearest], ys[nearest], sightM, seenRoute);
+        planned = plan;
         if (plan) {
             sincePlan = 0;
             Route route = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM)
@@ -129,6 +133,21 @@ public final class RouteFollower {
     /** @return the y to drive at, metres (after a TARGET step) */
     public double targetY() {
         return targetY;
+    }
+
+    /** @return whether the last step planned, so that the route may have changed (or been dropped) */
+    public boolean planned() {
+        return planned;
+    }
+
+    /** @return the route's waypoints' x, metres, from where it was planned to the goal (empty: no route; do not change) */
+    public double[] waypointsX() {
+        return xs == null ? NONE : xs;
+    }
+
+    /** @return the route's waypoints' y, metres (empty: no route; do not change) */
+    public double[] waypointsY() {
+        return ys == null ? NONE : ys;
     }
 
     /** @return how many plans in a row found no route */

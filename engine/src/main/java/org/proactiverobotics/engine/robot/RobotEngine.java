@@ -22,6 +22,7 @@ import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.StartUp;
 import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.StateStoreException;
+import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.persistence.CommitGroup;
@@ -458,6 +459,7 @@ public final class RobotEngine {
         private UnaryOperator<EngineTables> decorate = UnaryOperator.identity();
         private ScenarioPlugins plugins = ScenarioPlugins.none();
         private DecisionObserver observer;
+        private BeliefObserver belief;
         private Set<String> only;
         private final List<IterationListener> listeners = new ArrayList<>();
         private CommitGuard guard;
@@ -549,6 +551,12 @@ public final class RobotEngine {
             return this;
         }
 
+        /** @param belief told what the scenarios believed in each iteration (a trace), or null */
+        public Builder belief(BeliefObserver belief) {
+            this.belief = belief;
+            return this;
+        }
+
         /** @param listener observes every iteration and rule */
         public Builder listener(IterationListener listener) {
             listeners.add(Objects.requireNonNull(listener));
@@ -617,6 +625,9 @@ public final class RobotEngine {
             freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {
                 b.service(DecisionObserver.class, observer);
+            }
+            if (belief != null) {
+                b.service(BeliefObserver.class, belief);
             }
             listeners.forEach(b::listener);
             if (stateStore == null) {

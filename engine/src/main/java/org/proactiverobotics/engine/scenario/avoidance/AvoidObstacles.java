@@ -1,8 +1,10 @@
 package org.proactiverobotics.engine.scenario.avoidance;
 
+import java.util.Locale;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.SharedMemory;
+import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.motion.Clearance;
@@ -72,18 +74,34 @@ public final class AvoidObstacles extends Rule {
      */
     @Override
     protected boolean conditions(RuleContext ctx) {
+        BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
+        if (belief != null && position != null) {
+            belief.pose(ctx.iteration(), position.xM(), position.yM(), heading.yawRad());
+        }
+        String intended = intended(ctx);
         if (Math.abs(heading.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
             suggestion = Steering.STOP;
+            if (belief != null) {
+                belief.vetoed(ctx.iteration(), String.format(Locale.ROOT,
+                        "vetoed %s: the distance readings are %.3f s older than the heading, not driving blind",
+                        intended == null ? "no command" : intended, (heading.simTimeMs() - scan.simTimeMs()) / 1000.0));
+            }
             return true;
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         OccupancyMap map = position == null ? null
                 : ctx.findService(KnownMap.class).map(m -> m.current(ctx.iteration(), position.simTimeMs())).orElse(null);
-        suggestion = reflex.vet(intended(ctx), scan, map, position == null ? 0.0 : position.xM(),
+        suggestion = reflex.vet(intended, scan, map, position == null ? 0.0 : position.xM(),
                 position == null ? 0.0 : position.yM(), heading.yawRad(), profile,
                 Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM()));
         if (position == null) {
             reflex.forget(); // without a position the hits cannot be placed: only this scan counted
+        }
+        if (suggestion != null && belief != null) {
+            String reason = reflex.reason(intended);
+            if (reason != null) {
+                belief.vetoed(ctx.iteration(), reason);
+            }
         }
         return suggestion != null;
     }

@@ -3,6 +3,7 @@ package org.proactiverobotics.engine.scenario.battery;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.Clearance;
 import org.proactiverobotics.engine.motion.CollisionReflex;
 import org.proactiverobotics.engine.motion.ControlPeriod;
@@ -139,6 +140,13 @@ public final class MoveToRecharge extends Rule {
                 profile.axleWidthM() / 2) == RouteFollower.Status.TARGET) {
             aimX = route.targetX(); // no route on the map known so far: straight at the station, the reflex beneath
             aimY = route.targetY();
+        }
+        BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
+        if (belief != null) {
+            belief.pose(ctx.iteration(), position.xM(), position.yM(), heading.yawRad());
+            if (route.planned()) {
+                belief.route(ctx.iteration(), route.waypointsX(), route.waypointsY());
+            }
         }
         if (tripPlannedM < 0) {
             tripPlannedM = route.remainingM(position.xM(), position.yM(), xM, yM);

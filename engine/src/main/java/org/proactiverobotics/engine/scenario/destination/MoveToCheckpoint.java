@@ -1,8 +1,10 @@
 package org.proactiverobotics.engine.scenario.destination;
 
+import java.util.Locale;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
@@ -90,15 +92,25 @@ public final class MoveToCheckpoint extends Rule {
 
     @Override
     protected void actions(RuleContext ctx) {
+        BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
+        if (belief != null) {
+            belief.pose(ctx.iteration(), position.xM(), position.yM(), heading.yawRad());
+        }
         reached = position.distanceTo(xM, yM) < radiusM * Checkpoint.REACHED_FRACTION;
         if (reached) {
             ctx.service(MissionTables.class).markReached(seq, position.simTimeMs());
+            if (belief != null) {
+                belief.route(ctx.iteration(), new double[0], new double[0]); // this route ends here
+            }
             return;
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
         RouteFollower.Status status = route.step(map, position.xM(), position.yM(), xM, yM,
                 Checkpoint.routeReachM(radiusM), profile.axleWidthM() / 2);
+        if (belief != null && route.planned()) {
+            belief.route(ctx.iteration(), route.waypointsX(), route.waypointsY());
+        }
         if (status == RouteFollower.Status.NO_ROUTE) {
             if (noRouteSinceMs < 0) {
                 noRouteSinceMs = position.simTimeMs();
@@ -106,6 +118,9 @@ public final class MoveToCheckpoint extends Rule {
             if (position.simTimeMs() - noRouteSinceMs >= NO_ROUTE_MS) {
                 unreachable = true;
                 ctx.service(MissionTables.class).markUnreachable(seq, position.simTimeMs());
+                if (belief != null) {
+                    belief.checkpointUnreachable(ctx.iteration(), seq, unreachableReason(position.simTimeMs() - noRouteSinceMs));
+                }
             }
             ctx.suggest(Steering.STOP);
             return;
@@ -113,6 +128,13 @@ public final class MoveToCheckpoint extends Rule {
         noRouteSinceMs = -1;
         behindSide = Steering.turnSide(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), behindSide);
         ctx.suggest(Steering.goTo(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), profile, behindSide));
+    }
+
+    /** What the engine knows of why: no plan on its map found a way to the checkpoint for so long. */
+    private String unreachableReason(long forMs) {
+        return String.format(Locale.ROOT, "no route to checkpoint %d (index %d) at (%.2f, %.2f) on the map from (%.2f, %.2f):"
+                        + " every plan for %.1f s found none (%d in a row), the way walled in as the map has it",
+                seq + 1, seq, xM, yM, position.xM(), position.yM(), forMs / 1000.0, route.plansWithoutRoute());
     }
 
     @Override

@@ -4,6 +4,7 @@ import java.util.List;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.GpsFix;
@@ -99,6 +100,7 @@ public final class UpdateMap extends Rule {
         List<MapChunk> changed = map.takeChanged();
         if (!changed.isEmpty()) {
             table.writeChunks(changed, scan.simTimeMs());
+            ctx.findService(BeliefObserver.class).ifPresent(b -> b.mapChanged(ctx.iteration(), changed));
         }
     }
 

@@ -1,0 +1,181 @@
+package org.proactiverobotics.app.mission;
+
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.proactiverobotics.app.replay.TraceBelief;
+import org.proactiverobotics.app.replay.TraceEvent;
+import org.proactiverobotics.engine.belief.BeliefObserver;
+import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
+import org.proactiverobotics.engine.tables.MapChunk;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+
+/**
+ * Gathers what the engine's scenarios said they believed, between two trace lines, and hands it
+ * over as deltas ({@link #take}): the pose when it moved by a millimetre or a milliradian, the route
+ * when its waypoints changed, the map's cells whose state changed (kept in a mirror of the map's
+ * states, one byte per cell), the veto's reason at an iteration ObstacleAvoidance won, and a
+ * checkpoint declared unreachable (reason and event). Engine thread only.
+ */
+final class BeliefTracer implements BeliefObserver {
+
+    private static final int CHUNK = OccupancyMap.CHUNK_CELLS;
+
+    // the newest of the iteration, not yet written
+    private boolean poseSaid;
+    private final double[] pose = new double[3];
+    private double[] route;
+    private long vetoIteration = -1;
+    private String vetoReason;
+    private String unreachableReason;
+    private int unreachableIndex = -1;
+    /** The map's cell states as the trace has them so far, by chunk. */
+    private final Map<Long, byte[]> mirror = new HashMap<>();
+    /** Changed cells not yet written, keyed for sorting by (iy, ix) ({@link #key}). */
+    private long[] changed = new long[256];
+    private int changedCount;
+    // what the trace holds: only a change is written
+    private final long[] writtenPose = {Long.MIN_VALUE, Long.MIN_VALUE, Long.MIN_VALUE};
+    private double[] writtenRoute = new double[0];
+
+    @Override
+    public void pose(long iteration, double xM, double yM, double headingRad) {
+        poseSaid = true;
+        pose[0] = xM;
+        pose[1] = yM;
+        pose[2] = headingRad;
+    }
+
+    @Override
+    public void route(long iteration, double[] xs, double[] ys) {
+        double[] r = new double[2 * xs.length];
+        for (int k = 0; k < xs.length; k++) {
+            r[2 * k] = xs[k];
+            r[2 * k + 1] = ys[k];
+        }
+        route = r;
+    }
+
+    @Override
+    public void mapChanged(long iteration, List<MapChunk> chunks) {
+        for (MapChunk c : chunks) {
+            long at = ((long) c.chunkX() << 32) ^ (c.chunkY() & 0xffffffffL);
+            byte[] known = mirror.computeIfAbsent(at, k -> new byte[CHUNK * CHUNK]);
+            byte[] cells = c.cells();
+            for (int q = 0; q < cells.length; q++) {
+                byte state = cells[q] >= OccupancyMap.OCCUPIED ? OccupancyMap.OCCUPIED : cells[q];
+                if (state != known[q]) {
+                    known[q] = state;
+                    add(key(c.chunkX() * CHUNK + q % CHUNK, c.chunkY() * CHUNK + q / CHUNK));
+                }
+            }
+        }
+    }
+
+    @Override
+    public void vetoed(long iteration, String reason) {
+        vetoIteration = iteration;
+        vetoReason = reason;
+    }
+
+    @Override
+    public void checkpointUnreachable(long iteration, int seq, String reason) {
+        unreachableIndex = seq;
+        unreachableReason = reason;
+    }
+
+    /** Sorts as (iy, ix): the row in the high half, the column with its sign bit flipped so that it sorts as signed. */
+    private static long key(int ix, int iy) {
+        return ((long) iy << 32) | ((ix ^ 0x80000000) & 0xffffffffL);
+    }
+
+    private void add(long k) {
+        if (changedCount == changed.length) {
+            changed = Arrays.copyOf(changed, 2 * changed.length);
+        }
+        changed[changedCount++] = k;
+    }
+
+    /**
+     * The belief for the trace line of an iteration, and forgets what it hands over.
+     *
+     * @param iteration the iteration the line records
+     * @param winner    the scenario whose command won it
+     * @param events    where a checkpoint declared unreachable goes
+     * @return the changes since the last line, or null when there are none
+     */
+    TraceBelief take(long iteration, String winner, List<TraceEvent> events) {
+        double[] newPose = null;
+        if (poseSaid) {
+            poseSaid = false;
+            long x = Math.round(pose[0] * 1000.0);
+            long y = Math.round(pose[1] * 1000.0);
+            long h = Math.round(pose[2] * 1000.0);
+            if (x != writtenPose[0] || y != writtenPose[1] || h != writtenPose[2]) {
+                writtenPose[0] = x;
+                writtenPose[1] = y;
+                writtenPose[2] = h;
+                newPose = pose.clone();
+            }
+        }
+        double[] newRoute = null;
+        if (route != null) {
+            if (!sameAsWritten(route)) {
+                writtenRoute = route;
+                newRoute = route;
+            }
+            route = null;
+        }
+        int[] delta = null;
+        if (changedCount > 0) {
+            Arrays.sort(changed, 0, changedCount);
+            int[] d = new int[3 * changedCount];
+            int m = 0;
+            for (int k = 0; k < changedCount; k++) {
+                if (k > 0 && changed[k] == changed[k - 1]) {
+                    continue;
+                }
+                int iy = (int) (changed[k] >> 32);
+                int ix = (int) changed[k] ^ 0x80000000;
+                d[m++] = ix;
+                d[m++] = iy;
+                d[m++] = state(ix, iy);
+            }
+            delta = m == d.length ? d : Arrays.copyOf(d, m);
+            changedCount = 0;
+        }
+        String reason = null;
+        if (vetoReason != null && vetoIteration == iteration && ObstacleAvoidanceScenario.NAME.equals(winner)) {
+            reason = vetoReason; // it replaced the command only when it won
+        }
+        vetoReason = null;
+        if (unreachableReason != null) {
+            reason = reason == null ? unreachableReason : reason + "; " + unreachableReason;
+            events.add(TraceEvent.checkpointUnreachable(unreachableIndex));
+            unreachableReason = null;
+        }
+        if (newPose == null && newRoute == null && delta == null && reason == null) {
+            return null;
+        }
+        return new TraceBelief(newPose, newRoute, delta, reason);
+    }
+
+    /** Whether a route equals the one written, to the millimetre the trace writes. */
+    private boolean sameAsWritten(double[] r) {
+        if (r.length != writtenRoute.length) {
+            return false;
+        }
+        for (int k = 0; k < r.length; k++) {
+            if (Math.round(r[k] * 1000.0) != Math.round(writtenRoute[k] * 1000.0)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private byte state(int ix, int iy) {
+        byte[] c = mirror.get(((long) Math.floorDiv(ix, CHUNK) << 32) ^ (Math.floorDiv(iy, CHUNK) & 0xffffffffL));
+        return c[Math.floorMod(iy, CHUNK) * CHUNK + Math.floorMod(ix, CHUNK)];
+    }
+}
