@@ -101,7 +101,7 @@ class ReplayBrowserTest extends CommandLineTest {
                 int rays = o.getAsJsonObject("seen").getAsJsonArray("scanM").size();
                 String scanLine = info.lines().filter(l -> l.startsWith("scan m ")).findFirst().orElseThrow();
                 assertThat(scanLine.substring("scan m ".length()).split(" ")).as("every ray's reading: %s", scanLine)
-                        .hasSize(rays);
+                        .hasSize(rays).allMatch(r -> r.matches("-?\\d+(\\.\\d)?°:(\\d+\\.\\d\\d|–)"), "angle°:reading");
             }
         }
         // a new address on the same page moves too
