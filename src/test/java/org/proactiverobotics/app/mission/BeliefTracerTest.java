@@ -47,19 +47,28 @@ class BeliefTracerTest {
     @Test
     void aPoseOrARouteIsWrittenOnlyWhenItChangedAtTheTracesResolution() {
         tracer.pose(3, 1.0, 2.0, 0.5);
-        tracer.route(3, new double[] {1.0, 3.0}, new double[] {2.0, 2.0});
+        tracer.route(3, "ReachDestination", new double[] {1.0, 3.0}, new double[] {2.0, 2.0});
         TraceBelief first = tracer.take(3, "ReachDestination", events);
         assertThat(first.pose()).containsExactly(1.0, 2.0, 0.5);
         assertThat(first.route()).containsExactly(1.0, 2.0, 3.0, 2.0);
 
         tracer.pose(4, 1.0002, 2.0, 0.5); // under a millimetre
-        tracer.route(4, new double[] {1.0, 3.0}, new double[] {2.0, 2.0}); // planned again, the same
+        tracer.route(4, "ReachDestination", new double[] {1.0, 3.0}, new double[] {2.0, 2.0}); // planned again, the same
         assertThat(tracer.take(4, "ReachDestination", events)).isNull();
 
-        tracer.route(5, new double[0], new double[0]);
+        tracer.route(5, "ReachDestination", new double[0], new double[0]);
         assertThat(tracer.take(5, "ReachDestination", events).route()).isEmpty();
-        tracer.route(6, new double[0], new double[0]);
+        tracer.route(6, "ReachDestination", new double[0], new double[0]);
         assertThat(tracer.take(6, "ReachDestination", events)).as("dropped once").isNull();
+    }
+
+    @Test
+    void theRouteTracedIsTheOneOfTheScenarioWhoseCommandWon() {
+        tracer.route(3, "BatteryMonitor", new double[] {0.0, -3.0}, new double[] {0.0, 0.0}); // to the station
+        tracer.route(3, "ReachDestination", new double[] {0.0, 2.0}, new double[] {0.0, 1.0}); // to a checkpoint
+        assertThat(tracer.take(3, "BatteryMonitor", events).route()).containsExactly(0.0, 0.0, -3.0, 0.0);
+        assertThat(tracer.take(4, "ObstacleAvoidance", events)).as("a veto follows no route of its own").isNull();
+        assertThat(tracer.take(5, "ReachDestination", events).route()).containsExactly(0.0, 0.0, 2.0, 1.0);
     }
 
     @Test

@@ -14,7 +14,7 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
 /**
  * Gathers what the engine's scenarios said they believed, between two trace lines, and hands it
  * over as deltas ({@link #take}): the pose when it moved by a millimetre or a milliradian, the route
- * when its waypoints changed, the map's cells whose state changed (kept in a mirror of the map's
+ * of the scenario whose command won when its waypoints changed, the map's cells whose state changed (kept in a mirror of the map's
  * states, one byte per cell), the veto's reason at an iteration ObstacleAvoidance won, and a
  * checkpoint declared unreachable (reason and event). Engine thread only.
  */
@@ -25,7 +25,8 @@ final class BeliefTracer implements BeliefObserver {
     // the newest of the iteration, not yet written
     private boolean poseSaid;
     private final double[] pose = new double[3];
-    private double[] route;
+    /** The newest route each scenario told of, {x0, y0, x1, y1, ...}: the winner's is the one the robot follows. */
+    private final Map<String, double[]> routes = new HashMap<>();
     private long vetoIteration = -1;
     private String vetoReason;
     private String unreachableReason;
@@ -48,13 +49,13 @@ final class BeliefTracer implements BeliefObserver {
     }
 
     @Override
-    public void route(long iteration, double[] xs, double[] ys) {
+    public void route(long iteration, String scenario, double[] xs, double[] ys) {
         double[] r = new double[2 * xs.length];
         for (int k = 0; k < xs.length; k++) {
             r[2 * k] = xs[k];
             r[2 * k + 1] = ys[k];
         }
-        route = r;
+        routes.put(scenario, r);
     }
 
     @Override
@@ -120,12 +121,10 @@ final class BeliefTracer implements BeliefObserver {
             }
         }
         double[] newRoute = null;
-        if (route != null) {
-            if (!sameAsWritten(route)) {
-                writtenRoute = route;
-                newRoute = route;
-            }
-            route = null;
+        double[] followed = routes.get(winner); // a winner without a route (a veto, a stop) leaves the last one shown
+        if (followed != null && followed != writtenRoute && !sameAsWritten(followed)) {
+            writtenRoute = followed;
+            newRoute = followed;
         }
         int[] delta = null;
         if (changedCount > 0) {

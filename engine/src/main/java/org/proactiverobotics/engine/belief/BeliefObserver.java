@@ -24,14 +24,16 @@ public interface BeliefObserver {
     }
 
     /**
-     * A route was planned (possibly the same as before) or dropped.
+     * A route was planned (possibly the same as before) or dropped. Several scenarios may each
+     * follow a route of their own: the robot follows the one of the scenario whose command wins.
      *
      * @param iteration the iteration
+     * @param scenario  the scenario whose rule follows the route
      * @param xs        the waypoints' x, metres, from the robot to the goal; empty when the route was dropped
      *                  (valid during the call only)
      * @param ys        their y, metres
      */
-    default void route(long iteration, double[] xs, double[] ys) {
+    default void route(long iteration, String scenario, double[] xs, double[] ys) {
     }
 
     /**

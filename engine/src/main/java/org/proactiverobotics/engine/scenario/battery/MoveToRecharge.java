@@ -145,7 +145,7 @@ public final class MoveToRecharge extends Rule {
         if (belief != null) {
             belief.pose(ctx.iteration(), position.xM(), position.yM(), heading.yawRad());
             if (route.planned()) {
-                belief.route(ctx.iteration(), route.waypointsX(), route.waypointsY());
+                belief.route(ctx.iteration(), scenario(), route.waypointsX(), route.waypointsY());
             }
         }
         if (tripPlannedM < 0) {

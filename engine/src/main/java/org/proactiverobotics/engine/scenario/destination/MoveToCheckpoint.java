@@ -100,7 +100,7 @@ public final class MoveToCheckpoint extends Rule {
         if (reached) {
             ctx.service(MissionTables.class).markReached(seq, position.simTimeMs());
             if (belief != null) {
-                belief.route(ctx.iteration(), new double[0], new double[0]); // this route ends here
+                belief.route(ctx.iteration(), scenario(), new double[0], new double[0]); // this route ends here
             }
             return;
         }
@@ -109,7 +109,7 @@ public final class MoveToCheckpoint extends Rule {
         RouteFollower.Status status = route.step(map, position.xM(), position.yM(), xM, yM,
                 Checkpoint.routeReachM(radiusM), profile.axleWidthM() / 2);
         if (belief != null && route.planned()) {
-            belief.route(ctx.iteration(), route.waypointsX(), route.waypointsY());
+            belief.route(ctx.iteration(), scenario(), route.waypointsX(), route.waypointsY());
         }
         if (status == RouteFollower.Status.NO_ROUTE) {
             if (noRouteSinceMs < 0) {
