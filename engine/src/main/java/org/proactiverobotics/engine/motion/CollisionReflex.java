@@ -164,14 +164,15 @@ public final class CollisionReflex {
         }
         double reachM = c.imminentM() * Math.min(1.0, speed / profile.maxSpeedMps()) + SIDE_MARGIN_M;
         vetoReachM = reachM;
-        double[] flanks = lastFlankM.clone();
+        double leftBefore = lastFlankM[0];
+        double rightBefore = lastFlankM[1];
         int guarded = flankGuard(s, turnRate);
         if (guarded != 0) {
             turning = -guarded; // away from the flank it would close on
             cause = CAUSE_FLANK;
             causeX = guarded > 0 ? lastFlankM[0] : lastFlankM[1];
             causeY = guarded;
-            flankClosing = closing(causeX, flanks[guarded > 0 ? 0 : 1]);
+            flankClosing = closing(causeX, guarded > 0 ? leftBefore : rightBefore);
         }
         if (guarded == 0 && !hitsWithin(map, xM, yM, yawRad, radiusM, speed, turnRate, reachM, false)) {
             turning = 0;
