@@ -3,8 +3,8 @@ package org.proactiverobotics.app.foxglove;
 import org.proactiverobotics.app.replay.TraceStep;
 
 /**
- * The one place where run.mcap reads what the engine believed from an iteration's step (DESIGN
- * section 13: trace.jsonl's {@code belief}, {@code mapDelta} and {@code reason}). Until those fields
+ * The one place where run.mcap reads what the engine believed from an iteration's step (trace.jsonl's
+ * {@code belief}, {@code mapDelta} and {@code reason}, docs/report.md). Until those fields
  * reach {@link TraceStep}, the belief is the GPS fix and inertial-unit heading the engine read, and
  * there are no map deltas nor reasons; once they do, only this class changes.
  */

@@ -14,7 +14,7 @@ import org.proactiverobotics.mcap.McapWriter;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
- * Writes run.mcap (DESIGN section 13): each iteration's step, the same one trace.jsonl gets, as
+ * Writes run.mcap (docs/foxglove.md): each iteration's step, the same one trace.jsonl gets, as
  * JSON messages on the Foxglove channels, log time = simulated time. /world once at time 0; per
  * step /tf (world → base_link, true pose), /pose (true pose), /pose_estimate (the engine's belief,
  * when it changed), /scan (the rays the engine read), /decision, /battery, one /events message per

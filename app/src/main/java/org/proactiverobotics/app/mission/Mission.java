@@ -89,7 +89,7 @@ public final class Mission {
     }
 
     /**
-     * Also writes run.mcap (the run for Foxglove, DESIGN section 13) beside trace.jsonl.
+     * Also writes run.mcap (the run for Foxglove, docs/foxglove.md) beside trace.jsonl.
      *
      * @param enabled whether to
      * @return this mission
