@@ -111,10 +111,10 @@ public final class McapCheck {
             if (Arrays.equals(b, 0, b.length, Opcode.MAGIC, 0, b.length)) {
                 throw new Cut("the file ends inside the leading magic");
             }
-            throw new Corrupt("not an MCAP file: it does not start with the MCAP magic");
+            throw new Corrupt("it does not start with the MCAP magic bytes");
         }
         if (!Arrays.equals(b, 0, 8, Opcode.MAGIC, 0, 8)) {
-            throw new Corrupt("not an MCAP file: it does not start with the MCAP magic");
+            throw new Corrupt("it does not start with the MCAP magic bytes");
         }
         CRC32 dataCrc = new CRC32();
         long pos = 8;

@@ -65,7 +65,8 @@ class McapWriterTest {
     @Test
     void aFileCutAnywhereIsIncompleteNeverWholeNorACrash() throws IOException {
         byte[] f = sample(2048);
-        for (int cut = 0; cut < f.length; cut++) {
+        // every byte of the head and the tail (header, first chunk, summary, footer), every 7th in between
+        for (int cut = 0; cut < f.length; cut += cut < 3000 || cut > f.length - 3000 ? 1 : 7) {
             McapCheck.Report r = McapCheck.check(Arrays.copyOf(f, cut));
             assertThat(r.ok()).as("cut at %d", cut).isFalse();
             assertThat(r.incomplete()).as("cut at %d: %s", cut, r.problem()).isTrue();
@@ -99,7 +100,7 @@ class McapWriterTest {
         McapCheck.Report r = McapCheck.check("{\"iteration\": 1}\n".getBytes(StandardCharsets.UTF_8));
 
         assertThat(r.incomplete()).isFalse();
-        assertThat(r.problem()).startsWith("not an MCAP file");
+        assertThat(r.problem()).isEqualTo("it does not start with the MCAP magic bytes");
     }
 
     private static long le(byte[] b, int at, int n) {

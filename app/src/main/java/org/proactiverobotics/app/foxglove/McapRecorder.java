@@ -213,15 +213,7 @@ public final class McapRecorder implements AutoCloseable {
                 j.integer(0);
             }
         }
-        j.closeArray().name("intensities").openArray();
-        ray = 0;
-        for (int b = 0; b < scan.bearings; b++) {
-            boolean hit = ray < scan.slot.length && scan.slot[ray] == b;
-            j.integer(hit && ray < rays.length && Double.isFinite(rays[ray]) ? 1 : 0);
-            if (hit) {
-                ray++;
-            }
-        }
+        j.closeArray().name("intensities").openArray(); // none: a bearing without a ray reads 0
         j.closeArray().close().end();
     }
 
