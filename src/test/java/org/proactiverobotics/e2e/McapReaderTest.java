@@ -19,6 +19,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -44,6 +45,7 @@ class McapReaderTest extends CommandLineTest {
     @ParameterizedTest
     @MethodSource("bundledWorlds")
     void theReferenceReaderReadsTheRunOfEveryBundledWorldAsItsTraceSaysIt(String world) throws Exception {
+        assumeNodeInstalled();
         Path dir = tmp.resolve(world);
         // the default world on the default link (embedded H2), the others over the direct link: the same run, faster
         String[] link = world.equals(WorldFiles.DEFAULT_WORLD) ? new String[0] : new String[] {"--link", "direct"};
@@ -132,6 +134,7 @@ class McapReaderTest extends CommandLineTest {
 
     @Test
     void aSweepWritesRunMcapInEachMissionsFolder() throws Exception {
+        assumeNodeInstalled();
         Path out = tmp.resolve("sweep");
         assertThat(run("sweep", "--worlds", "reference-arena", "--seeds", "1..2", "--link", "direct", "--mcap", "--out",
                 out.toString())).as(err.toString()).isIn(0, 1);
@@ -176,6 +179,30 @@ class McapReaderTest extends CommandLineTest {
         }
     }
 
+    /**
+     * Skips the calling test, saying why, when Node.js or npm is not installed; under CI (CI=true, where
+     * .ci/run installs them) fails instead, so that the reference reader never goes unrun there.
+     */
+    static void assumeNodeInstalled() {
+        boolean there = runs("node", "--version") && runs("npm", "--version");
+        if (!there) {
+            String why = "no Node.js or npm: install nodejs and npm (Debian) to run the MCAP reference reader; .ci/run installs them";
+            assertThat("true".equals(System.getenv("CI"))).as(why).isFalse();
+            System.err.println("SKIPPED MCAP reference reader tests: " + why);
+        }
+        Assumptions.assumeTrue(there, "no Node.js or npm: the MCAP reference reader cannot run");
+    }
+
+    private static boolean runs(String... command) {
+        try {
+            Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+            p.getInputStream().readAllBytes();
+            return p.waitFor(60, TimeUnit.SECONDS) && p.exitValue() == 0;
+        } catch (IOException | InterruptedException e) {
+            return false;
+        }
+    }
+
     /** Runs the reference reader's check on a run's folder; installs its pinned packages first if missing. */
     static String referenceReader(Path runDir) throws IOException, InterruptedException {
         Path reader = Deployment.root().resolve("src/test/mcap-reader");
@@ -187,12 +214,7 @@ class McapReaderTest extends CommandLineTest {
     }
 
     private static synchronized String exec(Path dir, List<String> command) throws IOException, InterruptedException {
-        Process p;
-        try {
-            p = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true).start();
-        } catch (IOException e) {
-            throw new AssertionError(command.get(0) + " is not installed: .ci/run installs Debian's nodejs and npm", e);
-        }
+        Process p = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true).start();
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(p.waitFor(300, TimeUnit.SECONDS)).as(String.join(" ", command)).isTrue();
         assertThat(p.exitValue()).as(String.join(" ", command) + ":\n" + output).isZero();

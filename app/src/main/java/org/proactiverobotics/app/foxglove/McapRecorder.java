@@ -36,6 +36,7 @@ public final class McapRecorder implements AutoCloseable {
     private final ScanLayout scan;
     private final double bodyM;
     private final MapGrid map = new MapGrid();
+    private final BeliefFields beliefs = new BeliefFields();
     private final double[] belief = new double[3];
     private final int tf;
     private final int pose;
@@ -45,9 +46,6 @@ public final class McapRecorder implements AutoCloseable {
     private final int decision;
     private final int battery;
     private final int events;
-    private long lastBeliefX = Long.MIN_VALUE;
-    private long lastBeliefY;
-    private long lastBeliefHeading;
     private boolean mapPending;
     private long lastMapMs = Long.MIN_VALUE;
     private long lastStepMs;
@@ -135,17 +133,9 @@ public final class McapRecorder implements AutoCloseable {
         poseInFrame(t, s.xM(), s.yM(), s.headingRad());
         emit(pose, t);
 
-        if (BeliefFields.pose(s, belief)) {
-            long bx = Math.round(belief[0] * 1000);
-            long by = Math.round(belief[1] * 1000);
-            long bh = Math.round(belief[2] * 1000);
-            if (bx != lastBeliefX || by != lastBeliefY || bh != lastBeliefHeading) {
-                lastBeliefX = bx;
-                lastBeliefY = by;
-                lastBeliefHeading = bh;
-                poseInFrame(t, belief[0], belief[1], belief[2]);
-                emit(poseEstimate, t);
-            }
+        if (beliefs.newPose(s, belief)) {
+            poseInFrame(t, belief[0], belief[1], belief[2]);
+            emit(poseEstimate, t);
         }
 
         if (s.scanM() != null) {
@@ -169,12 +159,12 @@ public final class McapRecorder implements AutoCloseable {
         for (TraceEvent e : s.events()) {
             log(t, level(e.type()), e.toJson().toString());
         }
-        String reason = BeliefFields.reason(s);
+        String reason = beliefs.reason(s);
         if (reason != null) {
             log(t, 3, reason);
         }
 
-        int[][] delta = BeliefFields.mapDelta(s);
+        int[][] delta = beliefs.mapDelta(s);
         if (delta != null && map.apply(delta)) {
             mapPending = true;
         }
