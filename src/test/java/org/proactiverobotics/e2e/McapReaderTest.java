@@ -176,6 +176,9 @@ class McapReaderTest extends CommandLineTest {
 
             assertThat(out.toString()).containsPattern("/pose +foxglove.PoseInFrame +" + steps + "\n")
                     .containsPattern("/decision +proactive.Decision +" + steps + "\n");
+            assumeNodeInstalled();
+            // no trace.jsonl in the robot's folder: every check of the reference reader but those against it
+            assertThat(referenceReader(tmp.resolve("out"))).endsWith(" 0 failed");
         }
     }
 
