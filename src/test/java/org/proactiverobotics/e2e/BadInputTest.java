@@ -37,6 +37,9 @@ class BadInputTest extends CommandLineTest {
                 Arguments.of("empty", "", "malformed JSON"),
                 Arguments.of("array", "[1, 2, 3]", "expected a JSON object"),
                 Arguments.of("truncated", "{\"name\": \"x\", \"arena\": {\"radiusM\"", "malformed JSON"),
+                Arguments.of("missing-comma", "{\"name\": \"x\", \"arena\": {\"radiusM\": 3}\n  \"robot\": 1}",
+                        "malformed JSON: an object is not closed, or a ',' is missing between its entries (line 2, column 4, in arena)"),
+                Arguments.of("unquoted", "{\"name\": x}", "malformed JSON: not strict JSON"),
                 Arguments.of("nan-literal", "{\"name\": \"x\", \"arena\": {\"radiusM\": NaN}, " + CHECKS
                         + ", \"checkpoints\": [{\"x\": 1, \"y\": 1}]}", "malformed JSON"),
                 Arguments.of("sql-name-overflow", "{\"name\": \"x'; DROP TABLE checkpoints; --\", \"arena\": {\"radiusM\": 1e400}, "
@@ -77,7 +80,8 @@ class BadInputTest extends CommandLineTest {
         assertThat(runOut).doesNotExist();
         assertThat(robotOut).doesNotExist();
         assertThat(out.toString()).isEmpty();
-        assertThat(err.toString()).doesNotContain("\tat ").doesNotContain("Exception in");
+        assertThat(err.toString()).doesNotContain("\tat ").doesNotContain("Exception in")
+                .doesNotContain("setStrictness").doesNotContain("LENIENT").doesNotContain("http"); // Gson's advice and link
     }
 
     static Stream<Arguments> badOptions() {
@@ -92,7 +96,9 @@ class BadInputTest extends CommandLineTest {
                 Arguments.of(List.of("run", "--world", "/nowhere/at/all.json"), "no such file"),
                 Arguments.of(List.of("run", "--strategy", sql), "unknown strategy"),
                 Arguments.of(List.of("run", "--strategy", huge), "unknown strategy"),
-                Arguments.of(List.of("run", "--strategy", "SAFETY-FIRST"), "unknown strategy"),
+                Arguments.of(List.of("run", "--strategy", "SAFETY-LAST"), "unknown strategy"),
+                Arguments.of(List.of("run", "--wrld", "x.json"), "Did you mean: --world?"),
+                Arguments.of(List.of("run", "--noise", "Loud"), "unknown noise level Loud"),
                 Arguments.of(List.of("run", "--link", "pigeon"), "pigeon"),
                 Arguments.of(List.of("run", "--quiet=maybe"), "maybe"),
                 // validate
@@ -147,13 +153,32 @@ class BadInputTest extends CommandLineTest {
     }
 
     @Test
-    void aRobotOutputThatIsAFileIsBadInputAndTheFileIsLeftAlone() throws Exception {
+    void anOutputThatIsAFileIsBadInputSaidSoAndTheFileIsLeftAlone() throws Exception {
         Path file = Files.writeString(tmp.resolve("report-here"), "keep me");
-        assertThat(run("robot", "--world", Deployment.root().resolve("worlds/reference-arena.json").toString(),
-                "--db", NO_DB, "--wait-s", "1", "--out", file.toString())).isEqualTo(2);
-        assertThat(err.toString()).contains("cannot create the output directory");
-        assertThat(Files.readString(file)).isEqualTo("keep me");
+        String world = Deployment.root().resolve("worlds/reference-arena.json").toString();
+        assertThat(run("robot", "--world", world, "--db", NO_DB, "--wait-s", "1", "--out", file.toString())).isEqualTo(2);
+        assertThat(run("run", "--out", file.toString(), "--quiet")).isEqualTo(2);
+        assertThat(err.toString()).isEqualTo(("--out " + file + " is a file, not a folder: give a folder that does not exist"
+                + " yet or is empty\n").repeat(2));
+        err.getBuffer().setLength(0);
         assertThat(run("run", "--out", file.resolve("sub").toString(), "--quiet")).isEqualTo(2);
+        assertThat(err.toString()).isEqualTo("--out " + file.resolve("sub") + ": " + file.toAbsolutePath()
+                + " is a file, not a folder: give a folder that does not exist yet\n");
         assertThat(Files.readString(file)).isEqualTo("keep me");
+        assertThat(out.toString()).isEmpty();
+    }
+
+    @Test
+    void aRobotOutputThatHoldsSomethingIsRefusedBeforeTheDatabaseUnlessForced() throws Exception {
+        Path full = Files.createDirectories(tmp.resolve("full"));
+        Files.writeString(full.resolve("report.json"), "an earlier robot's");
+        String world = Deployment.root().resolve("worlds/reference-arena.json").toString();
+        assertThat(run("robot", "--world", world, "--db", NO_DB, "--wait-s", "1", "--out", full.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("--out " + full + " exists and is not empty", "--force");
+        assertThat(Files.readString(full.resolve("report.json"))).isEqualTo("an earlier robot's");
+        // with --force it goes on to the database, which is not there: exit 3, the folder as it was
+        assertThat(run("robot", "--world", world, "--db", NO_DB, "--wait-s", "0", "--force", "--out", full.toString()))
+                .isEqualTo(3);
+        assertThat(Files.readString(full.resolve("report.json"))).isEqualTo("an earlier robot's");
     }
 }

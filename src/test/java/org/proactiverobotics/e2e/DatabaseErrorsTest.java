@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
 import java.net.ServerSocket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -18,6 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.proactiverobotics.app.Main;
 import org.proactiverobotics.db.TestDatabases;
 
 /**
@@ -107,6 +110,27 @@ class DatabaseErrorsTest extends CommandLineTest {
         assertThat(tookMs).isBetween(1_000L, 8_000L);
         assertThat(outDir).doesNotExist();
         assertThat(out.toString()).isEmpty();
+    }
+
+    /**
+     * H2 prints a stack trace of its own on the console when it cannot write its folder: the
+     * process, not only the command's error stream, must show one line.
+     */
+    @Test
+    void anH2FileDatabaseInAFolderThatCannotBeMadeIsOneLineOfTheProcessAndWritesNothing() throws Exception {
+        Path file = Files.writeString(tmp.resolve("not-a-folder"), "keep me");
+        Path outDir = tmp.resolve("out");
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Dlogback.configurationFile=logback.xml", "-cp", System.getProperty("java.class.path"), Main.class.getName(),
+                "run", "--db", "jdbc:h2:" + file.resolve("sub/mission"), "--wait-s", "2", "--quiet", "--out", outDir.toString())
+                .redirectErrorStream(true).start();
+        String printed = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assertThat(p.exitValue()).as(printed).isEqualTo(3);
+        assertThat(printed.lines().toList()).as(printed).containsExactly("cannot create the H2 database's folder "
+                + file.resolve("sub") + " (Not a directory): give --db a path in a folder you can write to");
+        assertThat(outDir).doesNotExist();
+        assertThat(Files.readString(file)).isEqualTo("keep me");
     }
 
     private static String[] args(String command, String url, String waitS, Path outDir) {

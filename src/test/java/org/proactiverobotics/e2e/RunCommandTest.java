@@ -64,9 +64,35 @@ class RunCommandTest extends CommandLineTest {
     }
 
     @Test
-    void anUnknownOptionIsAUsageErrorWithExitTwo() {
+    void anUnknownOptionIsAUsageErrorWithExitTwoThatSuggestsTheOptionMeantNotTheWholeUsage() {
         assertThat(run("run", "--wrld", "x.json")).isEqualTo(2);
-        assertThat(err.toString()).contains("--wrld");
+        assertThat(err.toString()).isEqualTo("unknown option --wrld\nDid you mean: --world?\nSee 'proactive run --help'.\n");
+        err.getBuffer().setLength(0);
+        assertThat(run("swep", "--worlds", "reference-arena")).isEqualTo(2);
+        assertThat(err.toString()).isEqualTo("unknown command swep\nDid you mean: sweep?\nSee 'proactive --help'.\n");
+        assertThat(out.toString()).isEmpty();
+    }
+
+    @Test
+    void aFolderThatHoldsSomethingIsRefusedUntouchedAndForceWritesIntoIt() throws Exception {
+        Path outDir = Files.createDirectories(tmp.resolve("earlier"));
+        Files.writeString(outDir.resolve("report.json"), "an earlier run's");
+        assertThat(run("run", "--link", "direct", "--quiet", "--out", outDir.toString())).isEqualTo(2);
+        assertThat(err.toString()).isEqualTo("--out " + outDir
+                + " exists and is not empty: give --force to write into it anyway, or another folder\n");
+        assertThat(out.toString()).isEmpty();
+        try (var files = Files.list(outDir)) {
+            assertThat(files.map(p -> p.getFileName().toString()).toList()).containsExactly("report.json");
+        }
+        assertThat(Files.readString(outDir.resolve("report.json"))).isEqualTo("an earlier run's");
+
+        // with --force, and names in any case (as a user types them)
+        assertThat(run("run", "--link", "Direct", "--noise", "Realistic", "--strategy", "Safety-First", "--quiet", "--force",
+                "--out", outDir.toString())).as(err.toString()).isZero();
+        JsonObject report = JsonParser.parseString(Files.readString(outDir.resolve("report.json"))).getAsJsonObject();
+        assertThat(report.get("strategy").getAsString()).isEqualTo("safety-first");
+        assertThat(out.toString()).contains("the direct in-process link", "realistic sensor noise", "MISSION_ACCOMPLISHED");
+        assertThat(outDir.resolve("replay.html")).exists();
     }
 
     @Test

@@ -32,7 +32,7 @@ class StoredMissionTest {
             int code = cl.execute("robot", "--world", worldsDir() + "reference-arena.json",
                     "--db", db.jdbcUrl(), "--db-user", "sa", "--robot-id", "5", "--out", out.toString(), "--wait-s", "5");
             assertThat(code).as(err.toString()).isEqualTo(2);
-            assertThat(err.toString()).contains("different mission for robot 5").contains("1 checkpoints stored");
+            assertThat(err.toString()).contains("different mission for robot 5").contains("1 checkpoint stored");
             assertThat(db.count("checkpoints")).isEqualTo(1);
             assertThat(out.resolve("report.json")).doesNotExist();
         }

@@ -59,6 +59,7 @@ class SweepCommandTest extends CommandLineTest {
         Path two = tmp.resolve("two-jobs");
         assertThat(run("sweep", "--worlds", "reference-arena", worlds.toString(), "--noise", "none,small",
                 "--link", "direct", "--jobs", "2", "--out", two.toString())).as(err.toString()).isEqualTo(1);
+        assertThat(out.toString()).contains("Sweep of 4 missions (2 worlds x 1 strategy x 2 noise levels x each world's seed)");
         Map<String, CSVRecord> rows = rows(two.resolve("results.csv"));
         assertThat(rows).hasSize(4);
         assertThat(rows.get("0001-reference-arena-safety-first-none-s1").get("outcome")).isEqualTo("MISSION_ACCOMPLISHED");
@@ -76,10 +77,10 @@ class SweepCommandTest extends CommandLineTest {
             assertThat(deterministic(folder.resolve("report.json"))).isEqualTo(deterministic(alone.resolve("report.json")));
             assertThat(Files.readString(folder.resolve("trace.jsonl"))).isEqualTo(Files.readString(alone.resolve("trace.jsonl")));
         }
-        // the same rows with one job at a time (the order of the rows may differ, not their content)
+        // the same rows with one job at a time (the order of the rows may differ, not their content), names in any case
         Path one = tmp.resolve("one-job");
-        assertThat(run("sweep", "--worlds", "reference-arena", worlds.toString(), "--noise", "none,small",
-                "--link", "direct", "--jobs", "1", "--out", one.toString())).isEqualTo(1);
+        assertThat(run("sweep", "--worlds", "reference-arena", worlds.toString(), "--noise", "None,SMALL,small",
+                "--strategies", "Safety-First", "--link", "Direct", "--jobs", "1", "--out", one.toString())).isEqualTo(1);
         assertThat(withoutWallTime(rows(one.resolve("results.csv")))).isEqualTo(withoutWallTime(rows));
         // noise changes the run: the small-noise mission is not the noiseless one
         assertThat(deterministic(two.resolve("0001-reference-arena-safety-first-none-s1/report.json")))
@@ -196,10 +197,31 @@ class SweepCommandTest extends CommandLineTest {
         }
         err.getBuffer().setLength(0);
         assertThat(run("sweep", "--worlds", "reference-arena", "--out", full.toString())).isEqualTo(2);
+        assertThat(err.toString()).isEqualTo("--out " + full
+                + " exists and is not empty: give --force to write into it anyway, or another folder\n");
         assertThat(err.toString()).contains("exists and is not empty", "--force");
         try (var files = Files.list(full)) {
             assertThat(files.map(p -> p.getFileName().toString()).toList()).containsExactly("keep.txt");
         }
+    }
+
+    @Test
+    void helpNamesEveryFileOfAMissionsFolder() throws Exception {
+        Path folder = tmp.resolve("one");
+        assertThat(run("sweep", "--worlds", shortWorld().toString(), "--link", "direct", "--out", folder.toString()))
+                .as(err.toString()).isEqualTo(1);
+        List<String> files;
+        try (var dirs = Files.list(folder)) {
+            Path mission = dirs.filter(Files::isDirectory).findFirst().orElseThrow();
+            try (var in = Files.list(mission)) {
+                files = in.map(p -> p.getFileName().toString()).sorted().toList();
+            }
+        }
+        assertThat(files).containsExactly("replay.html", "report.json", "trace.jsonl", "trajectory.svg", "world.json");
+        out.getBuffer().setLength(0);
+        assertThat(run("sweep", "--help")).isZero();
+        assertThat(out.toString().replaceAll("\\s+", " "))
+                .contains("(report.json, trace.jsonl, replay.html, trajectory.svg, world.json)");
     }
 
     private static String[] concat(String[] args, String... more) {

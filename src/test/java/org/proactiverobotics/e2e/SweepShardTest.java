@@ -80,7 +80,7 @@ class SweepShardTest extends CommandLineTest {
             assertThat(missionsRun).isEqualTo(4);
             out.getBuffer().setLength(0);
             assertThat(run(dirs.toArray(String[]::new))).as(err.toString()).isZero();
-            assertThat(out.toString()).contains("Merged " + n + " shards: 0 of 4 missions accomplished");
+            assertThat(out.toString()).contains("Merged " + n + (n == 1 ? " shard" : " shards") + ": 0 of 4 missions accomplished");
             Path merged = cut.resolve("results.csv");
             assertThat(rowsLessWallTime(merged)).isEqualTo(expected);
             assertThat(Files.readAllLines(merged).subList(1, 5)).extracting(l -> l.substring(l.lastIndexOf(',') + 1, l.lastIndexOf(',') + 5))
@@ -121,7 +121,7 @@ class SweepShardTest extends CommandLineTest {
                 {new String[] {"--out", o, s0, base.resolve("other-noise").toString(), s2},
                         "shards of different sweeps (4 missions against 2)"},
                 {new String[] {"--out", o, s0, base.resolve("half").toString(), s2}, "shards cut differently"},
-                {new String[] {"--out", o, cutShort.toString(), s1, s2}, "have no row (missions 4)"},
+                {new String[] {"--out", o, cutShort.toString(), s1, s2}, "1 of 4 missions has no row (mission 4)"},
                 {new String[] {"--out", o, twice.toString(), s1, s2}, "has two rows"},
                 {new String[] {"--out", o, s0, s1, noManifest.toString()}, "has no sweep.json"},
                 {new String[] {"--out", s1, s0, s1, s2}, "is the shard"},

@@ -9,7 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.stream.Stream;
+import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.generate.Solvability;
 import org.proactiverobotics.app.generate.WorldGenerator;
 import org.proactiverobotics.app.sweep.WorldJson;
@@ -101,7 +101,7 @@ public final class GenerateCommand implements Callable<Integer> {
     }
 
     private String problem() {
-        if (!WorldGenerator.Kind.labels().contains(kind)) {
+        if (!WorldGenerator.Kind.labels().contains(kind.toLowerCase(Locale.ROOT))) {
             return "--kind must be one of " + String.join(", ", WorldGenerator.Kind.labels()) + ": " + kind;
         }
         if (!(robotRadiusM >= WorldGenerator.MIN_RADIUS_M && robotRadiusM <= WorldGenerator.MAX_RADIUS_M)) {
@@ -116,18 +116,6 @@ public final class GenerateCommand implements Callable<Integer> {
         if (count < 1 || count > 10_000) {
             return "--count must be from 1 to 10000: " + count;
         }
-        if (Files.exists(out)) {
-            if (!Files.isDirectory(out)) {
-                return "--out " + out + " is a file, not a folder";
-            }
-            try (Stream<Path> entries = Files.list(out)) {
-                if (entries.findAny().isPresent() && !force) {
-                    return "--out " + out + " exists and is not empty (give --force to write into it anyway)";
-                }
-            } catch (IOException e) {
-                return "--out " + out + ": cannot read the folder: " + e.getMessage();
-            }
-        }
-        return null;
+        return OutputDirectory.refusal(out, force);
     }
 }

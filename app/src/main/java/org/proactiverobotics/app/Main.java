@@ -1,5 +1,7 @@
 package org.proactiverobotics.app;
 
+import java.io.PrintWriter;
+import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -46,7 +48,44 @@ public final class Main implements Runnable {
         CommandLine cl = new CommandLine(new Main());
         giveEverySubcommandTheVersion(cl);
         cl.setExitCodeExceptionMapper(e -> e instanceof CommandLine.ParameterException ? EXIT_BAD_INPUT : EXIT_INFRASTRUCTURE);
+        cl.setParameterExceptionHandler(Main::usageError);
         return cl;
+    }
+
+    /**
+     * A usage error in a few lines, not the whole usage: what is wrong, the option or command a
+     * letter or two away that was likely meant (else picocli's own guess), and where the options
+     * are listed.
+     */
+    private static int usageError(CommandLine.ParameterException e, String[] args) {
+        CommandLine cl = e.getCommandLine();
+        CommandLine.Model.CommandSpec spec = cl.getCommandSpec();
+        PrintWriter err = cl.getErr();
+        String message = e.getMessage();
+        List<String> suggestions = List.of();
+        if (e instanceof CommandLine.UnmatchedArgumentException u && !u.getUnmatched().isEmpty()) {
+            String typed = u.getUnmatched().get(0);
+            if (u.isUnknownOption()) {
+                message = "unknown option " + typed;
+                suggestions = Suggestions.closest(typed, spec.optionsMap().keySet());
+            } else if (!spec.subcommands().isEmpty()) {
+                message = "unknown command " + typed;
+                suggestions = Suggestions.closest(typed, spec.subcommands().keySet());
+            } else {
+                message = "unexpected argument " + typed
+                        + (spec.positionalParameters().isEmpty() ? " (" + spec.name() + " takes options only)" : "");
+            }
+            if (suggestions.isEmpty()) {
+                suggestions = u.getSuggestions();
+            }
+        }
+        err.println(message);
+        if (!suggestions.isEmpty()) {
+            err.println("Did you mean: " + String.join(" or ", suggestions) + "?");
+        }
+        err.println("See '" + spec.qualifiedName() + " --help'.");
+        err.flush();
+        return EXIT_BAD_INPUT;
     }
 
     /** Every subcommand offers -V/--version (mixinStandardHelpOptions): without a provider it would print nothing. */

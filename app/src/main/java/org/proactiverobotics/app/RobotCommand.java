@@ -53,8 +53,12 @@ public final class RobotCommand implements Callable<Integer> {
     private ProcessOptions process;
 
     @Option(names = "--out", paramLabel = "DIR",
-            description = "Output directory for report.json. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
+            description = "Output directory for report.json and replay.html; must not exist or be empty."
+                    + " Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
     private Path out;
+
+    @Option(names = "--force", description = "Write into --out even if it is not empty (files of the same names are replaced).")
+    private boolean force;
 
     @Option(names = "--timing", paramLabel = "MODE", defaultValue = "sync",
             description = "sync (one engine iteration per control step, deterministic) or realtime. Default: ${DEFAULT-VALUE}.")
@@ -91,11 +95,18 @@ public final class RobotCommand implements Callable<Integer> {
         }
         Path outDir = out != null ? out : Path.of("runs", worldSpec.name() + "-"
                 + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        String refusal = OutputDirectory.refusal(outDir, force);
+        if (refusal != null) {
+            err.println(refusal);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
         OutputDirectory output;
         try {
             output = OutputDirectory.create(outDir);
         } catch (IOException e) {
-            err.println("cannot create the output directory " + outDir + ": " + e.getMessage());
+            err.println("cannot create the output directory " + outDir + " (" + OutputDirectory.reason(e)
+                    + "): give --out a folder you can write to");
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
@@ -112,7 +123,7 @@ public final class RobotCommand implements Callable<Integer> {
 
     private int runMission(WorldSpec worldSpec, OutputDirectory output, ShutdownSignal signal, PrintWriter stdout, PrintWriter err) {
         Path outDir = output.path();
-        Timing mode = Timing.of(timing).orElseThrow(); // checked by validate()
+        Timing mode = Timing.of(timing.toLowerCase(Locale.ROOT)).orElseThrow(); // checked by problem()
         stdout.printf(Locale.ROOT, "Robot %d: mission %s on %s, %s timing%n", process.robotId(), worldSpec.name(), DbOptions.redacted(db.url()), mode.label());
         stdout.flush();
         MissionReport report;
@@ -182,7 +193,7 @@ public final class RobotCommand implements Callable<Integer> {
         if (dbProblem != null) {
             return dbProblem;
         }
-        if (Timing.of(timing).isEmpty()) {
+        if (Timing.of(timing.toLowerCase(Locale.ROOT)).isEmpty()) { // any case here; robot_clock holds the lower-case word
             return "--timing must be sync or realtime: " + timing;
         }
         if (noise.problem() != null) {

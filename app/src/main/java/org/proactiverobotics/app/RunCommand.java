@@ -54,8 +54,11 @@ public final class RunCommand implements Callable<Integer> {
     private String world;
 
     @Option(names = "--out", paramLabel = "DIR",
-            description = "Output directory. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
+            description = "Output directory; must not exist or be empty. Default: runs/<world-name>-<yyyyMMdd-HHmmss>/.")
     private Path out;
+
+    @Option(names = "--force", description = "Write into --out even if it is not empty (files of the same names are replaced).")
+    private boolean force;
 
     @Option(names = "--db", paramLabel = "JDBC_URL",
             description = "The shared database, e.g. jdbc:mariadb://127.0.0.1:3306/proactive. Default: embedded H2.")
@@ -137,11 +140,7 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
-        MissionOptions.Link layer = switch (link) {
-            case "jdbc" -> MissionOptions.Link.JDBC;
-            case "direct" -> MissionOptions.Link.DIRECT;
-            default -> null;
-        };
+        MissionOptions.Link layer = MissionOptions.Link.of(link);
         if (layer == null || (layer == MissionOptions.Link.DIRECT && db != null)) {
             err.println(layer == null ? "--link must be jdbc or direct: " + link
                     : "--link direct uses no database: drop --db");
@@ -154,11 +153,18 @@ public final class RunCommand implements Callable<Integer> {
         MissionOptions options = new MissionOptions(spec, url, db != null ? dbUser : "sa", db != null ? dbPassword : "",
                 Strategy.SAFETY_FIRST, robotId).withLink(layer).withScenarios(choice.plugins(), choice.strategy())
                 .withNoise(noiseLevel);
+        String refusal = OutputDirectory.refusal(outDir, force);
+        if (refusal != null) {
+            err.println(refusal);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
         OutputDirectory output;
         try {
             output = OutputDirectory.create(outDir);
         } catch (IOException e) {
-            err.println("cannot create the output directory " + outDir + ": " + e.getMessage());
+            err.println("cannot create the output directory " + outDir + " (" + OutputDirectory.reason(e)
+                    + "): give --out a folder you can write to");
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }

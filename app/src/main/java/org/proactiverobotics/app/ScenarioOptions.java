@@ -17,10 +17,14 @@ import picocli.CommandLine.Option;
  */
 public final class ScenarioOptions {
 
+    /** The engine's start order as the help texts state it (an annotation needs a constant; StartOrderTest checks it). */
+    static final String START_ORDER = "DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins"
+            + " → ObstacleAvoidance → FailSafe → DecisionMaking";
+
     @Option(names = "--scenarios", paramLabel = "PATH", split = ",",
             description = "Scenario plug-ins: jars, or folders of jars, listing their scenarios in"
-                    + " META-INF/services/org.proactiverobotics.engine.Scenario. They start after the built-in scenarios"
-                    + " that suggest, in the order given, before FailSafe and DecisionMaking.")
+                    + " META-INF/services/org.proactiverobotics.engine.Scenario. Start order: " + ScenarioOptions.START_ORDER
+                    + " (the plug-ins in the order given: the collision monitor vets their commands too).")
     private List<Path> scenarios = List.of();
 
     @Option(names = "--strategy", paramLabel = "NAME", completionCandidates = RunCommand.StrategyNames.class,

@@ -18,6 +18,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
+import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.NoiseLevel;
 import org.proactiverobotics.app.sweep.MissionResult;
@@ -52,8 +53,9 @@ import picocli.CommandLine.Spec;
         subcommands = SweepMergeCommand.class,
         description = {"Runs every combination of worlds x strategies x noise levels x seeds as its own mission, in one JVM,"
                 + " --jobs at a time, each on its own embedded database (or the direct link).",
-                "Writes results.csv (one row per mission, as it ends), summary.html (a sortable table and plots) and"
-                        + " each mission's folder (report.json, trace.jsonl, trajectory.svg, world.json; run.mcap with --mcap).",
+                "Writes results.csv (one row per mission, as it ends), summary.html (a sortable table and plots) and a"
+                        + " folder for each mission (report.json, trace.jsonl, replay.html, trajectory.svg, world.json; run.mcap"
+                        + " with --mcap).",
                 "Exit codes: 0 every mission accomplished, 1 any was not, 2 bad input (nothing written), 3 infrastructure"
                         + " failure."})
 public final class SweepCommand implements Callable<Integer> {
@@ -83,7 +85,8 @@ public final class SweepCommand implements Callable<Integer> {
     private String seeds;
 
     @Option(names = "--scenarios", paramLabel = "PATH", split = ",",
-            description = "Scenario plug-ins (jars or folders of jars), loaded into every mission, as run's --scenarios.")
+            description = "Scenario plug-ins (jars or folders of jars), loaded into every mission, as run's --scenarios."
+                    + " Start order: " + ScenarioOptions.START_ORDER + ".")
     private List<Path> scenarios = new ArrayList<>();
 
     @Option(names = "--jobs", paramLabel = "N",
@@ -151,9 +154,10 @@ public final class SweepCommand implements Callable<Integer> {
     private int run(Plan plan, Path outDir, PrintWriter stdout, PrintWriter err) {
         List<SweepMission> missions = plan.missions();
         int jobsUsed = jobs != null ? jobs : Runtime.getRuntime().availableProcessors();
-        stdout.printf(Locale.ROOT, "Sweep of %s (%d worlds x %d strategies x %d noise levels x %s) on %s, %d at a time%n",
-                Plural.of(plan.all().size(), "mission"), plan.worldCount(), plan.strategyCount(), plan.noiseCount(),
-                seeds == null ? "each world's seed" : plan.seedCount() + " seeds",
+        stdout.printf(Locale.ROOT, "Sweep of %s (%s x %s x %s x %s) on %s, %d at a time%n",
+                Plural.of(plan.all().size(), "mission"), Plural.of(plan.worldCount(), "world"),
+                Plural.of(plan.strategyCount(), "strategy", "strategies"), Plural.of(plan.noiseCount(), "noise level"),
+                seeds == null ? "each world's seed" : Plural.of(plan.seedCount(), "seed"),
                 plan.link() == MissionOptions.Link.DIRECT ? "the direct link" : "embedded H2", jobsUsed);
         if (!plan.shard().isAll()) {
             stdout.printf(Locale.ROOT, "Shard %s: %s of the %d%n", plan.shard(), Plural.of(missions.size(), "mission"),
@@ -196,8 +200,8 @@ public final class SweepCommand implements Callable<Integer> {
         }
         double wallS = (System.nanoTime() - startNs) / 1e9;
         long accomplished = results.stream().filter(MissionResult::success).count();
-        String lead = String.format(Locale.ROOT, "%d of %d missions accomplished%s; %.1f s of wall time, %d at a time, %s,"
-                        + " %.1f missions per minute", accomplished, results.size(),
+        String lead = String.format(Locale.ROOT, "%d of %s accomplished%s; %.1f s of wall time, %d at a time, %s,"
+                        + " %.1f missions per minute", accomplished, Plural.of(results.size(), "mission"),
                 results.size() < missions.size() ? " (stopped after " + results.size() + " of " + missions.size() + ")" : "",
                 wallS, jobsUsed, plan.link() == MissionOptions.Link.DIRECT ? "direct link" : "embedded H2",
                 results.size() / Math.max(wallS, 1e-9) * 60);
@@ -252,19 +256,19 @@ public final class SweepCommand implements Callable<Integer> {
                 throw new BadInput("--shard: " + e.getMessage());
             }
         }
-        MissionOptions.Link layer = switch (link) {
-            case "jdbc" -> MissionOptions.Link.JDBC;
-            case "direct" -> MissionOptions.Link.DIRECT;
-            default -> throw new BadInput("--link must be jdbc or direct: " + link);
-        };
-        List<NoiseLevel> levels = new ArrayList<>();
-        for (String n : new LinkedHashSet<>(noise)) {
+        MissionOptions.Link layer = MissionOptions.Link.of(link);
+        if (layer == null) {
+            throw new BadInput("--link must be jdbc or direct: " + link);
+        }
+        Set<NoiseLevel> levelSet = new LinkedHashSet<>(); // "small,Small" is one level
+        for (String n : noise) {
             try {
-                levels.add(NoiseLevel.of(n));
+                levelSet.add(NoiseLevel.of(n));
             } catch (IllegalArgumentException e) {
                 throw new BadInput("--noise: " + e.getMessage());
             }
         }
+        List<NoiseLevel> levels = List.copyOf(levelSet);
         List<Long> seedList = seeds == null ? null : parseSeeds(seeds);
         List<WorldSpec> worldSpecs = loadWorlds();
         ScenarioPlugins plugins;
@@ -273,10 +277,13 @@ public final class SweepCommand implements Callable<Integer> {
             plugins = ScenarioPlugins.load(scenarios, RobotEngine.builtInScenarios());
             Map<String, Integer> slots = RobotEngine.freshSlots(plugins);
             List<String> names = strategies.isEmpty() && strategyFiles.isEmpty() ? List.of(Strategy.SAFETY_FIRST) : strategies;
-            for (String name : new LinkedHashSet<>(names)) {
-                Strategy s = Strategy.named(name);
-                s.check(slots);
-                strategyList.add(s);
+            Set<String> bundled = new LinkedHashSet<>();
+            for (String name : names) {
+                Strategy s = Strategy.named(name); // in any case: "safety-first,Safety-First" is one strategy
+                if (bundled.add(s.name())) {
+                    s.check(slots);
+                    strategyList.add(s);
+                }
             }
             for (Path file : strategyFiles) {
                 Strategy s = Strategy.read(file);
@@ -389,20 +396,7 @@ public final class SweepCommand implements Callable<Integer> {
     }
 
     private String outProblem(Path dir) {
-        if (!Files.exists(dir)) {
-            return null;
-        }
-        if (!Files.isDirectory(dir)) {
-            return "--out " + dir + " is a file, not a folder";
-        }
-        try (Stream<Path> entries = Files.list(dir)) {
-            if (entries.findAny().isPresent() && !force) {
-                return "--out " + dir + " exists and is not empty (give --force to write into it anyway)";
-            }
-        } catch (IOException e) {
-            return "--out " + dir + ": cannot read the folder: " + e.getMessage();
-        }
-        return null;
+        return OutputDirectory.refusal(dir, force);
     }
 
     /** Bad input: the message names the problem; the command exits 2 with nothing written. */

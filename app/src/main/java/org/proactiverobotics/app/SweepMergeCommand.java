@@ -63,8 +63,8 @@ public final class SweepMergeCommand implements Callable<Integer> {
         }
         try {
             SweepMerge.Merged m = SweepMerge.merge(dirs, target, force);
-            stdout.printf(Locale.ROOT, "Merged %d shards: %d of %d missions accomplished (%.1f s of missions' wall time in all)%n",
-                    m.shards(), m.accomplished(), m.missions(), m.missionsWallTimeS());
+            stdout.printf(Locale.ROOT, "Merged %s: %d of %s accomplished (%.1f s of missions' wall time in all)%n",
+                    Plural.of(m.shards(), "shard"), m.accomplished(), Plural.of(m.missions(), "mission"), m.missionsWallTimeS());
             stdout.println("Results: " + target.resolve("results.csv"));
             stdout.println("Summary: " + target.resolve("summary.html"));
             stdout.flush();

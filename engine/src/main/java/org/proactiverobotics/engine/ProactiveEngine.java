@@ -29,12 +29,11 @@ import org.slf4j.LoggerFactory;
  * ProactiveEngine engine = ProactiveEngine.builder()
  *         .robotId(1)
  *         .algorithm(Algorithm.LAZY)
- *         .store(new JdbcStateStore(dataSource))
+ *         .store(new JdbcStateStore(dataSource))                             // from engine.persistence
  *         .service(SensorDao.class, new SensorDao(dataSource))
  *         .build();
  * engine.start(new StartUp(List.of("DataAcquisition", "BatteryMonitor")));  // resumes when a state is saved
- * engine.runIteration();                                                      // lockstep, or:
- * PeriodicRunner runner = new PeriodicRunner(engine, Duration.ofMillis(32)).start();
+ * engine.runIteration();                                                      // once per control period
  * }</pre>
  *
  * <p>{@link #runIteration()} and the start methods belong to one thread at a time;
@@ -180,8 +179,8 @@ public final class ProactiveEngine {
     }
 
     /**
-     * Runs one iteration, saves the state and returns its figures. For lockstep use, or called
-     * by a {@link PeriodicRunner}.
+     * Runs one iteration, saves the state and returns its figures. Whoever drives the engine calls
+     * it once per control period (in the robot mission, {@code engine.robot.RobotEngine}).
      *
      * @return the iteration's summary
      * @throws StateStoreException when saving fails (the iteration itself has run)

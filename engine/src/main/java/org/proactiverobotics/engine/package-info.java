@@ -1,7 +1,10 @@
 /**
  * The Proactive Engine core: {@link org.proactiverobotics.engine.Rule}, the engine's
  * {@code currentQueue} and {@code nextQueue}, scenarios and their meta-rules, the shared memory
- * (CommandArray, PriorityArray) and the saved state.
+ * (CommandArray, PriorityArray) and what the saved state is
+ * ({@link org.proactiverobotics.engine.StateStore}, {@link org.proactiverobotics.engine.SavedState}).
+ * It is the bottom layer: it imports none of the engine's other packages and no database code;
+ * saving over JDBC is {@code org.proactiverobotics.engine.persistence}, beside it.
  *
  * <p>A scenario lives in a package of its own and imports only this one:
  * <pre>{@code

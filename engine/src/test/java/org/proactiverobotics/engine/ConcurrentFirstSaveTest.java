@@ -14,6 +14,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.persistence.JdbcStateStore;
 
 /** Many engines (one per robot) on one database save their first state at the same moment. */
 class ConcurrentFirstSaveTest {

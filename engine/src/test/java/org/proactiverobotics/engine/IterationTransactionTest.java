@@ -11,6 +11,9 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.persistence.IterationTransaction;
+import org.proactiverobotics.engine.persistence.JdbcStateStore;
+import org.proactiverobotics.engine.persistence.StateCodec;
 
 /** One transaction per iteration: all of an iteration's writes commit together, or none. */
 class IterationTransactionTest {

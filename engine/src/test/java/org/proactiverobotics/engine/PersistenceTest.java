@@ -14,6 +14,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.persistence.JdbcStateStore;
+import org.proactiverobotics.engine.persistence.StateCodec;
 
 /** The paper's failsafe: state saved each iteration, resumed on start, a corrupt state refused; on H2 and MariaDB. */
 class PersistenceTest {

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import org.junit.jupiter.api.Test;
+import org.proactiverobotics.engine.persistence.StateCodec;
 
 /** The paper's CommandArray and PriorityArray, and their JSON round trip. */
 class SharedMemoryTest {

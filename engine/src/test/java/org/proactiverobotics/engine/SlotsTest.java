@@ -13,6 +13,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
+import org.proactiverobotics.engine.persistence.JdbcStateStore;
+import org.proactiverobotics.engine.persistence.StateCodec;
 
 /** Slots are the engine's: given at start, entered by RuleContext.suggest, saved with the memory, kept on a resume. */
 class SlotsTest {

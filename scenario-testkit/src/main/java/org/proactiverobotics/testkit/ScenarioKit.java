@@ -302,7 +302,7 @@ public final class ScenarioKit implements AutoCloseable {
 
         /**
          * @param scenario a scenario of yours, run as a plug-in is (its slot given by the engine);
-         *                 several start in the order given, after the built-in ones that suggest
+         *                 several start in the order given, where {@link RobotEngine#startOrder} puts plug-ins
          * @return this builder
          */
         public Builder scenario(Scenario scenario) {

@@ -108,12 +108,12 @@ final class WorldParser {
             }
             JsonElement element = new Gson().getAdapter(JsonElement.class).read(reader);
             if (reader.peek() != JsonToken.END_DOCUMENT) {
-                problems.add("(root): malformed JSON: unexpected content after the top-level value at " + reader.getPath());
+                problems.add("(root): malformed JSON: something follows the world's closing '}' (a second object, or a '}' too many?)");
                 return null;
             }
             return element;
         } catch (IOException | JsonParseException | IllegalStateException e) {
-            problems.add("(root): malformed JSON: " + e.getMessage());
+            problems.add("(root): malformed JSON: " + JsonSyntax.describe(e));
             return null;
         }
     }

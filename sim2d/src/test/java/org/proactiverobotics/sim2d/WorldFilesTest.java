@@ -98,6 +98,20 @@ class WorldFilesTest {
     }
 
     @Test
+    void aJsonSyntaxErrorSaysInOurWordsWhatAndWhereWithoutTheParsersAdviceOrLink() {
+        assertThat(problems("{\"name\": \"x\", \"arena\": {\"radiusM\": 3}\n  \"robot\": 1}")).containsExactly(
+                "(root): malformed JSON: an object is not closed, or a ',' is missing between its entries (line 2, column 4, in arena)");
+        assertThat(problems("{\"name\": x}")).singleElement().asString()
+                .startsWith("(root): malformed JSON: not strict JSON").contains("(line 1, column 10, in name)");
+        for (String broken : List.of("{\"name\": \"x\",}", "{\"a\": [1,]}", "{\"a\" 1}", "{\"a\": \"b", "// c\n{}", "{'a': 1}",
+                "{\"a\": \"\\q\"}", "{\"a\": 1", MINIMAL + " {}")) {
+            assertThat(problems(broken)).as(broken).singleElement().asString().startsWith("(root): malformed JSON: ")
+                    .doesNotContain("setStrictness").doesNotContain("LENIENT").doesNotContain("http").doesNotContain("\n")
+                    .doesNotContain("$");
+        }
+    }
+
+    @Test
     void unknownKeys() {
         assertThat(problems(minimalWith("\"name\": \"m\"", "\"name\": \"m\", \"gravity\": 9.8")))
                 .singleElement().asString().startsWith("gravity: unknown key");

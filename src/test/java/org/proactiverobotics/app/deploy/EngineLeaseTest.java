@@ -21,6 +21,8 @@ import org.proactiverobotics.engine.robot.RobotEngine;
 class EngineLeaseTest {
 
     private static final int ROBOT = 7;
+    /** Long enough that a loaded machine cannot let it expire between two statements by accident. */
+    private static final int LEASE_MS = 4000;
 
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
@@ -28,8 +30,8 @@ class EngineLeaseTest {
         try (TestDatabase db = TestDatabases.open(kind)) {
             DataSource ds = db.dataSource();
             Schema.apply(ds);
-            EngineLease a = new EngineLease(ds, ROBOT, "engine-a", 600);
-            EngineLease b = new EngineLease(ds, ROBOT, "engine-b", 600);
+            EngineLease a = new EngineLease(ds, ROBOT, "engine-a", LEASE_MS);
+            EngineLease b = new EngineLease(ds, ROBOT, "engine-b", LEASE_MS);
             assertThat(a.tryTake()).isTrue();
             assertThat(b.tryTake()).as("held by A and not expired").isFalse();
 
@@ -41,7 +43,7 @@ class EngineLeaseTest {
             long saved = value(ds, "SELECT iteration FROM engine_state WHERE robot_id = " + ROBOT);
             assertThat(saved).isEqualTo(2);
 
-            Thread.sleep(700); // A stalls past its lease (a long GC, a frozen VM): B takes the robot over
+            Thread.sleep(LEASE_MS + 200L); // A stalls past its lease (a long GC, a frozen VM): B takes the robot over
             assertThat(b.tryTake()).isTrue();
             assertThat(b.epoch()).isEqualTo(2);
 
@@ -57,7 +59,7 @@ class EngineLeaseTest {
             assertThat(b.renew()).isTrue();
 
             // B restarted (same name, new process): it takes its own lease back at once, and its earlier life is out
-            EngineLease bAgain = new EngineLease(ds, ROBOT, "engine-b", 600);
+            EngineLease bAgain = new EngineLease(ds, ROBOT, "engine-b", LEASE_MS);
             assertThat(bAgain.tryTake()).isTrue();
             assertThat(bAgain.epoch()).isEqualTo(3);
             assertThat(b.renew()).isFalse();

@@ -29,6 +29,8 @@ public final class DatabaseProblem {
         ACCESS_DENIED(false),
         /** The server runs but has no such database: nobody creates it while we wait. */
         UNKNOWN_DATABASE(false),
+        /** The folder of an embedded H2 database's files cannot be created or written: nobody fixes it while we wait. */
+        NO_FOLDER(false),
         /** No driver of ours accepts the URL. */
         UNSUPPORTED_URL(false),
         /** Anything else the driver reported: retried, since it may be a server in the middle of starting. */
@@ -107,6 +109,14 @@ public final class DatabaseProblem {
             }
         }
         return new DatabaseProblem(Cause.OTHER, "database failure at " + (host == null ? DbOptions.redacted(url) : host) + ": " + words);
+    }
+
+    /**
+     * @param message why the folder of an embedded H2 database's files cannot be used, and what to do
+     * @return the problem, which waiting does not cure
+     */
+    static DatabaseProblem noFolder(String message) {
+        return new DatabaseProblem(Cause.NO_FOLDER, message);
     }
 
     private static DatabaseProblem unreachable(String host, String words) {

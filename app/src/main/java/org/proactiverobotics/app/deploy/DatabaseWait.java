@@ -91,6 +91,10 @@ public final class DatabaseWait {
 
     /** @return null when the database is usable, else what is wrong */
     static DatabaseProblem probe(DbOptions db, String table) {
+        String folder = H2Folder.problem(db.url());
+        if (folder != null) { // before H2 tries: it would print a stack trace of its own
+            return DatabaseProblem.noFolder(folder);
+        }
         try (Connection c = db.connect(); Statement s = c.createStatement()) {
             s.executeQuery(table == null ? "SELECT 1" : "SELECT COUNT(*) FROM " + table + " WHERE 1 = 0").close();
             return null;

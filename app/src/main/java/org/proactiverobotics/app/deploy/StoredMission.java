@@ -73,8 +73,9 @@ public final class StoredMission {
         same = same && station.map(s -> near(s, mission.station().xM(), mission.station().yM())).orElse(true);
         if (!same) {
             throw new Mismatch(String.format(Locale.ROOT, "the database already holds a different mission for robot %d"
-                    + " (%d checkpoints stored, the world has %d): start this world with another --robot-id, or on an"
-                    + " empty database", robotId, stored.size(), mission.checkpoints().size()));
+                    + " (%d %s stored, the world has %d): start this world with another --robot-id, or on an"
+                    + " empty database", robotId, stored.size(), stored.size() == 1 ? "checkpoint" : "checkpoints",
+                    mission.checkpoints().size()));
         }
     }
 

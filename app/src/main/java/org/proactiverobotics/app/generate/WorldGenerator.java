@@ -5,7 +5,10 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.SplittableRandom;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.proactiverobotics.app.sweep.WorldJson;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
@@ -79,11 +82,29 @@ public final class WorldGenerator {
     /** The largest, metres. */
     public static final double MAX_RADIUS_M = 0.3;
 
+    /** How {@link #world} names a world: its kind's label, a dash and its number, three digits at least. */
+    private static final String NAME_FORMAT = "%s-%03d";
+    /** A name {@link #NAME_FORMAT} writes, read back. */
+    private static final Pattern GENERATED_NAME = Pattern.compile("([a-z]+)-\\d{3,}");
     private static final double ARENA_M = 5.0;
     private static final int MAX_DRAWS = 500;
 
     private final Kind kind;
     private final double robotRadiusM;
+
+    /**
+     * The kind of a world this generator drew, read back from its name: {@link #world} names every
+     * world {@code <kind>-<NNN>} (and {@code generate} writes it to {@code <kind>-<NNN>.json}), as
+     * docs/experiments.md documents. A world file has no kind of its own, so this is the one reliable
+     * source of it; any other name (a world written by hand) has none.
+     *
+     * @param worldName a world's name
+     * @return its kind's label when the name is one of the kinds, a dash and three digits or more; else empty
+     */
+    public static Optional<String> kindOfName(String worldName) {
+        Matcher m = GENERATED_NAME.matcher(worldName);
+        return m.matches() && Kind.labels().contains(m.group(1)) ? Optional.of(m.group(1)) : Optional.empty();
+    }
 
     /** @param kind the kind of world to draw, for the default robot (radius {@value WorldSpec.Robot#DEFAULT_RADIUS_M} m) */
     public WorldGenerator(Kind kind) {
@@ -107,7 +128,7 @@ public final class WorldGenerator {
      */
     public WorldSpec world(long seed, int number) {
         SplittableRandom random = new SplittableRandom(seed * 1_000_003L + number * 7_919L + kind.ordinal());
-        String name = String.format(Locale.ROOT, "%s-%03d", kind.label(), number);
+        String name = String.format(Locale.ROOT, NAME_FORMAT, kind.label(), number);
         for (int draw = 0; draw < MAX_DRAWS; draw++) {
             WorldSpec candidate = draw(name, random);
             WorldSpec valid;

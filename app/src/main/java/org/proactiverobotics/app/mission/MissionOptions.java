@@ -15,7 +15,7 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * @param strategy the strategy to start with
  * @param robotId  the robot's id in the shared tables
  * @param link     how the engine and the robot talk
- * @param plugins  scenarios from outside, started after the built-in ones that suggest
+ * @param plugins  scenarios from outside, started where RobotEngine.startOrder puts them (before ObstacleAvoidance)
  * @param noise    the sensors' noise, drawn from the world's seed
  */
 public record MissionOptions(WorldSpec world, String jdbcUrl, String user, String password, Strategy strategy, int robotId,
@@ -26,7 +26,20 @@ public record MissionOptions(WorldSpec world, String jdbcUrl, String user, Strin
         /** The shared database (the paper's layer): each side with a pool of its own. */
         JDBC,
         /** In-process memory ({@link org.proactiverobotics.app.link.DirectLink}): no database at all. */
-        DIRECT
+        DIRECT;
+
+        /**
+         * @param word {@code jdbc} or {@code direct}, in any case
+         * @return the link, or null for another word
+         */
+        public static Link of(String word) {
+            for (Link link : values()) {
+                if (link.name().equalsIgnoreCase(word)) {
+                    return link;
+                }
+            }
+            return null;
+        }
     }
 
     /** Checks the link. */

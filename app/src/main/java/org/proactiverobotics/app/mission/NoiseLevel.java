@@ -40,13 +40,13 @@ public enum NoiseLevel {
     }
 
     /**
-     * @param label a level's label
+     * @param label a level's label, in any case ({@code Realistic} is {@code realistic})
      * @return the level
      * @throws IllegalArgumentException naming the label and the levels there are
      */
     public static NoiseLevel of(String label) {
         for (NoiseLevel level : values()) {
-            if (level.label().equals(label)) {
+            if (level.label().equalsIgnoreCase(label)) {
                 return level;
             }
         }

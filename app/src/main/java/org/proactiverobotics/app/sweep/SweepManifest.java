@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import org.proactiverobotics.app.mission.MissionOptions;
+import org.proactiverobotics.sim2d.JsonSyntax;
 
 /**
  * sweep.json: what a sweep (or one shard of it) was, written before its first mission, so that
@@ -103,7 +104,7 @@ public record SweepManifest(String definition, int shard, int shards, int missio
         try {
             m = GSON.fromJson(Files.readString(file, StandardCharsets.UTF_8), SweepManifest.class);
         } catch (JsonParseException e) {
-            throw new IllegalArgumentException(file + " is not a sweep's sweep.json: " + e.getMessage());
+            throw new IllegalArgumentException(file + " is not a sweep's sweep.json: malformed JSON: " + JsonSyntax.describe(e));
         }
         if (m == null || m.definition() == null || m.shards() < 1 || m.shard() < 0 || m.shard() >= m.shards()
                 || m.missions() < 0) {

@@ -88,7 +88,8 @@ public final class SweepMerge {
         if (!missing.isEmpty()) {
             String where = missing.stream().map(k -> folderOf.apply(k).dir().toString()).distinct()
                     .collect(Collectors.joining(", "));
-            throw new Refused(missing.size() + " of " + total + " missions have no row (missions " + list(missing)
+            throw new Refused(missing.size() + " of " + total + (missing.size() == 1 ? " missions has no row (mission "
+                    : " missions have no row (missions ") + list(missing)
                     + ") in " + where + ": was that shard stopped or did it fail? run it again, then merge");
         }
         for (ShardDir s : shards) {
@@ -111,8 +112,9 @@ public final class SweepMerge {
             wallS += row.wallTimeS();
         }
         String lead = String.format(Locale.ROOT,
-                "%d of %d missions accomplished; merged from %d shards (%.1f s of missions' wall time in all)",
-                accomplished, rows.size(), bySlice.size(), wallS);
+                "%d of %d %s accomplished; merged from %d %s (%.1f s of missions' wall time in all)",
+                accomplished, rows.size(), rows.size() == 1 ? "mission" : "missions", bySlice.size(),
+                bySlice.size() == 1 ? "shard" : "shards", wallS);
         Files.createDirectories(out);
         // both files whole or not at all: written beside, then moved in, results.csv last
         String part = "." + ProcessHandle.current().pid() + ".part"; // created as any file is (the umask's permissions)
@@ -138,7 +140,7 @@ public final class SweepMerge {
     private static SummaryHtml.Row summaryRow(CSVRecord r, Path shard, Path out) {
         try {
             return new SummaryHtml.Row(missionNumber(shard.resolve("results.csv"), r.get("mission")), r.get("world"),
-                    r.get("worldKind"), r.get("strategy"), r.get("noise"), Long.parseLong(r.get("seed")), r.get("outcome"),
+                    r.get("strategy"), r.get("noise"), Long.parseLong(r.get("seed")), r.get("outcome"),
                     Boolean.parseBoolean(r.get("success")), r.get("checkpointsReached") + "/" + r.get("checkpointsTotal"),
                     Double.parseDouble(r.get("simTimeS")), Double.parseDouble(r.get("wallTimeS")),
                     Double.parseDouble(r.get("distanceM")), Integer.parseInt(r.get("collisions")),
@@ -227,7 +229,7 @@ public final class SweepMerge {
             return "program " + a.version() + " against " + b.version();
         }
         if (a.missions() != b.missions()) {
-            return a.missions() + " missions against " + b.missions();
+            return a.missions() + (a.missions() == 1 ? " mission against " : " missions against ") + b.missions();
         }
         return "the same number of missions, but other worlds, strategies, noise levels, seeds or plug-ins";
     }

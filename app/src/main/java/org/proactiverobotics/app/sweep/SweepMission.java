@@ -23,7 +23,10 @@ public record SweepMission(int index, WorldSpec world, String source, Strategy s
                 noise.label(), seed);
     }
 
-    /** @return the world's kind: its name less a trailing number (cluttered-007 is of kind cluttered) */
+    /**
+     * @return results.csv's worldKind: the name less a trailing number (cluttered-007 is of kind cluttered), whatever
+     *         the name; summary.html trusts only generate's names ({@code WorldGenerator.kindOfName})
+     */
     public String worldKind() {
         return kindOf(world.name());
     }

@@ -18,8 +18,8 @@ import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.db.Schema;
-import org.proactiverobotics.engine.JdbcStateStore;
 import org.proactiverobotics.engine.ProactiveEngine;
+import org.proactiverobotics.engine.persistence.JdbcStateStore;
 
 /**
  * Engine iterations over n self-cloning rules with the state saved to embedded H2 at the end of

@@ -3,8 +3,8 @@ package org.proactiverobotics.engine.robot;
 import java.sql.SQLException;
 import java.util.List;
 import javax.sql.DataSource;
-import org.proactiverobotics.engine.CommitGroup;
-import org.proactiverobotics.engine.IterationTransaction;
+import org.proactiverobotics.engine.persistence.CommitGroup;
+import org.proactiverobotics.engine.persistence.IterationTransaction;
 
 /**
  * The next iterations of several robots' engines that one thread runs one after the other over

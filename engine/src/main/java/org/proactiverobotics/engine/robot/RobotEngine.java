@@ -14,32 +14,32 @@ import java.util.function.UnaryOperator;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.Writes;
 import org.proactiverobotics.engine.Algorithm;
-import org.proactiverobotics.engine.CommitGroup;
 import org.proactiverobotics.engine.IterationListener;
 import org.proactiverobotics.engine.IterationSummary;
-import org.proactiverobotics.engine.IterationTransaction;
-import org.proactiverobotics.engine.JdbcStateStore;
 import org.proactiverobotics.engine.ProactiveEngine;
 import org.proactiverobotics.engine.Scenario;
 import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.StartUp;
-import org.proactiverobotics.engine.StateCodec;
 import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.StateStoreException;
 import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.persistence.CommitGroup;
+import org.proactiverobotics.engine.persistence.IterationTransaction;
+import org.proactiverobotics.engine.persistence.JdbcStateStore;
+import org.proactiverobotics.engine.persistence.StateCodec;
 import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
 import org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario;
 import org.proactiverobotics.engine.scenario.dataacquisition.DataAcquisitionScenario;
 import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
 import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
 import org.proactiverobotics.engine.scenario.destination.ReachDestinationScenario;
-import org.proactiverobotics.engine.scenario.mapping.MappingScenario;
 import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
+import org.proactiverobotics.engine.scenario.mapping.MappingScenario;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.MissionTables;
-import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
@@ -70,9 +70,11 @@ import org.slf4j.LoggerFactory;
  */
 public final class RobotEngine {
 
-    /** The start order, for the javadoc. */
-    static final String ORDER_TEXT = "DataAcquisition, Mapping, BatteryMonitor, ReachDestination,"
-            + " the plug-ins in the order given, ObstacleAvoidance, FailSafe, DecisionMaking";
+    /** Where the plug-ins stand in {@link #startOrder}'s phrase, {@value}. */
+    public static final String PLUGINS = "plug-ins";
+    /** The start order, for the javadoc: {@link #startOrderPhrase()}, which a test keeps it equal to. */
+    static final String ORDER_TEXT = "DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins"
+            + " → ObstacleAvoidance → FailSafe → DecisionMaking";
     /** Prune the engine's history every this many iterations (finding the cut-off walks the kept rows: seldom is cheaper). */
     public static final int PRUNE_EVERY = 500;
     /** Keep this many of the robot's newest commands, answered requests and rule failures. */
@@ -182,6 +184,32 @@ public final class RobotEngine {
         Map<String, Integer> bySlot = new LinkedHashMap<>();
         slots.entrySet().stream().sorted(Map.Entry.comparingByValue()).forEach(e -> bySlot.put(e.getKey(), e.getValue()));
         return Collections.unmodifiableMap(bySlot);
+    }
+
+    /**
+     * The order StartUp starts the scenarios in, the one order every engine uses (the builder
+     * takes it from here): the built-in scenarios that find the way, the plug-ins in the order
+     * given, then the collision monitor (so that it vets a plug-in's command too), the fail-safe and
+     * the decision.
+     *
+     * @param plugins the plug-ins' scenario names, in the order given
+     * @return every scenario's name, in start order
+     */
+    public static List<String> startOrder(List<String> plugins) {
+        List<String> order = new ArrayList<>(FIRST.keySet());
+        order.remove(ObstacleAvoidanceScenario.NAME);
+        order.addAll(plugins);
+        order.add(ObstacleAvoidanceScenario.NAME);
+        order.addAll(LAST);
+        return List.copyOf(order);
+    }
+
+    /**
+     * @return the start order as the documentation and the help texts state it: the scenarios
+     *         joined by " → ", the plug-ins standing as {@value #PLUGINS}
+     */
+    public static String startOrderPhrase() {
+        return String.join(" → ", startOrder(List.of(PLUGINS)));
     }
 
     /** Starts from StartUp, discarding any saved state of this robot's engine. */
@@ -486,7 +514,7 @@ public final class RobotEngine {
             return this;
         }
 
-        /** @param plugins scenarios from outside, started after the built-in ones that suggest */
+        /** @param plugins scenarios from outside, started as {@link #startOrder} places them: before ObstacleAvoidance */
         public Builder plugins(ScenarioPlugins plugins) {
             this.plugins = Objects.requireNonNull(plugins);
             return this;
@@ -562,11 +590,7 @@ public final class RobotEngine {
             known.addAll(plugins.scenarios().values());
             ScenarioRegistry registry = ScenarioRegistry.of(known);
 
-            List<String> order = new ArrayList<>(FIRST.keySet());
-            order.remove(ObstacleAvoidanceScenario.NAME);
-            order.addAll(plugins.scenarios().keySet());
-            order.add(ObstacleAvoidanceScenario.NAME);
-            order.addAll(LAST);
+            List<String> order = new ArrayList<>(startOrder(List.copyOf(plugins.scenarios().keySet())));
             if (only != null) {
                 only.forEach(registry::get); // an unknown name fails here, naming the known ones
                 order.retainAll(only);

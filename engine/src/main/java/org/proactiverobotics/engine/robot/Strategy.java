@@ -81,10 +81,9 @@ public record Strategy(String name, Map<String, Integer> priorities, Map<String,
      * @throws StrategyException naming the known strategies when there is none of that name
      */
     public static Strategy named(String name) {
-        if (!NAMES.contains(name)) {
-            throw new StrategyException("unknown strategy '" + name + "'; known: " + String.join(", ", NAMES));
-        }
-        String resource = "strategies/" + name + ".json";
+        String known = NAMES.stream().filter(n -> n.equalsIgnoreCase(name)).findFirst()
+                .orElseThrow(() -> new StrategyException("unknown strategy '" + name + "'; known: " + String.join(", ", NAMES)));
+        String resource = "strategies/" + known + ".json";
         try (InputStream in = Strategy.class.getResourceAsStream(resource)) {
             if (in == null) {
                 throw new IllegalStateException("bundled strategy " + resource + " is missing from the engine jar");

@@ -13,7 +13,7 @@ import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
 import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Writes;
-import org.proactiverobotics.engine.IterationTransaction;
+import org.proactiverobotics.engine.persistence.IterationTransaction;
 
 /**
  * The engine side's tables over JDBC, for one robot. Every statement is plain SQL that H2

@@ -45,6 +45,18 @@ class RobotEngineTest {
     }
 
     @Test
+    void theStartOrderIsTheBuildersAndItsPhraseIsTheJavadocs() throws Exception {
+        try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
+            Schema.apply(db.dataSource());
+            RobotEngine engine = RobotEngine.builder().database(db.dataSource())
+                    .plugins(ScenarioPlugins.of(new Alpha())).build();
+            assertThat(engine.scenarios()).isEqualTo(RobotEngine.startOrder(List.of("Alpha")));
+        }
+        assertThat(RobotEngine.startOrderPhrase()).isEqualTo(RobotEngine.ORDER_TEXT).isEqualTo("DataAcquisition → Mapping"
+                + " → BatteryMonitor → ReachDestination → plug-ins → ObstacleAvoidance → FailSafe → DecisionMaking");
+    }
+
+    @Test
     void aPluginAlsoListedOnTheClassPathIsTakenOnceAsThePlugin() throws Exception {
         // Alpha is in this module's test META-INF/services, as a user's scenario is in their own project's tests.
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {

@@ -77,5 +77,6 @@ class StrategyTest {
         Strategy dataAcquisition = Strategy.parse("{\"priorities\": {\"DataAcquisition\": 3}}", "da.json");
         assertThatThrownBy(() -> dataAcquisition.check(SLOTS)).hasMessageContaining("does not suggest");
         assertThatThrownBy(() -> Strategy.named("yolo")).hasMessageContaining("known: safety-first");
+        assertThat(Strategy.named("Safety-First")).as("a bundled name in any case").isEqualTo(Strategy.named("safety-first"));
     }
 }

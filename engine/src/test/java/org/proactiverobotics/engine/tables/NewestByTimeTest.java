@@ -9,7 +9,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
-import org.proactiverobotics.engine.IterationTransaction;
+import org.proactiverobotics.engine.persistence.IterationTransaction;
 
 /**
  * "Newest" is by simulated time and iteration, not by id: on a Galera cluster the ids that

@@ -1,4 +1,4 @@
-package org.proactiverobotics.engine;
+package org.proactiverobotics.engine.persistence;
 
 import java.sql.Connection;
 import java.sql.SQLException;

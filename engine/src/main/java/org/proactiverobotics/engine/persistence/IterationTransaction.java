@@ -1,4 +1,4 @@
-package org.proactiverobotics.engine;
+package org.proactiverobotics.engine.persistence;
 
 import java.io.PrintWriter;
 import java.sql.Connection;
@@ -15,6 +15,7 @@ import java.util.logging.Logger;
 import javax.sql.DataSource;
 import org.proactiverobotics.db.RoundTrip;
 import org.proactiverobotics.db.Writes;
+import org.proactiverobotics.engine.StateStoreException;
 
 /**
  * One database transaction per engine iteration, on one explicit connection: between

@@ -1,4 +1,4 @@
-package org.proactiverobotics.engine;
+package org.proactiverobotics.engine.persistence;
 
 import com.google.gson.Gson;
 import com.google.gson.GsonBuilder;
@@ -7,6 +7,10 @@ import java.lang.reflect.Modifier;
 import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
+import org.proactiverobotics.engine.Rule;
+import org.proactiverobotics.engine.SharedMemory;
+import org.proactiverobotics.engine.StateStore;
+import org.proactiverobotics.engine.StateStoreException;
 
 /**
  * Turns rules and the shared memory into JSON and back, with Gson: a rule is its type (class

@@ -1,4 +1,4 @@
-package org.proactiverobotics.engine;
+package org.proactiverobotics.engine.persistence;
 
 import java.sql.Connection;
 import java.sql.PreparedStatement;
@@ -15,6 +15,14 @@ import javax.sql.DataSource;
 import org.proactiverobotics.db.MultiRow;
 import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Writes;
+import org.proactiverobotics.engine.CorruptStateException;
+import org.proactiverobotics.engine.Part;
+import org.proactiverobotics.engine.Rule;
+import org.proactiverobotics.engine.RuleFailure;
+import org.proactiverobotics.engine.SavedState;
+import org.proactiverobotics.engine.SharedMemory;
+import org.proactiverobotics.engine.StateStore;
+import org.proactiverobotics.engine.StateStoreException;
 
 /**
  * Saves the engine state through JDBC in the tables {@code engine_state}, {@code engine_queue}
