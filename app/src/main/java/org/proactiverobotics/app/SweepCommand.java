@@ -54,8 +54,8 @@ import picocli.CommandLine.Spec;
         description = {"Runs every combination of worlds x strategies x noise levels x seeds as its own mission, in one JVM,"
                 + " --jobs at a time, each on its own embedded database (or the direct link).",
                 "Writes results.csv (one row per mission, as it ends), summary.html (a sortable table and plots) and a"
-                        + " folder for each mission (report.json, trace.jsonl, replay.html, trajectory.svg, world.json; run.mcap"
-                        + " with --mcap).",
+                        + " folder for each mission (report.json, trace.jsonl, replay.html, trajectory.svg, world.json), with"
+                        + " --mcap also run.mcap.",
                 "Exit codes: 0 every mission accomplished, 1 any was not, 2 bad input (nothing written), 3 infrastructure"
                         + " failure."})
 public final class SweepCommand implements Callable<Integer> {
