@@ -14,6 +14,7 @@ WORKDIR /src
 # layer of their own, which a change to the sources does not invalidate.
 COPY mvnw pom.xml ./
 COPY .mvn .mvn
+COPY mcap/pom.xml mcap/
 COPY db/pom.xml db/
 COPY engine/pom.xml engine/
 COPY scenario-testkit/pom.xml scenario-testkit/

@@ -25,6 +25,7 @@ import picocli.CommandLine.Command;
                 StrategyCommand.class,
                 DbCommand.class,
                 WatchCommand.class,
+                McapCheckCommand.class,
         })
 public final class Main implements Runnable {
 

@@ -2,6 +2,7 @@ package org.proactiverobotics.app;
 
 import java.io.IOException;
 import java.io.PrintWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
@@ -15,6 +16,7 @@ import org.proactiverobotics.app.deploy.RobotProcess;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.deploy.StoredMission;
+import org.proactiverobotics.app.foxglove.McapRecorder;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.protocol.Timing;
 import org.proactiverobotics.sim2d.WorldSpec;
@@ -35,7 +37,7 @@ import picocli.CommandLine.Spec;
         description = {"Runs the simulated robot and its controller against a shared database, driven by an `engine` process.",
                 "Sync timing (default): the robot acts on each step only once the engine has served it: the same run as `run`.",
                 "Realtime timing: the robot steps on the wall clock, the engine iterates on its own period.",
-                "Writes report.json and replay.html to the output directory.",
+                "Writes report.json and replay.html to the output directory (and run.mcap with --mcap).",
                 "Exit codes: 0 mission accomplished, 1 mission failed or stopped, 2 bad input, 3 database not usable within --wait-s."})
 public final class RobotCommand implements Callable<Integer> {
 
@@ -68,6 +70,9 @@ public final class RobotCommand implements Callable<Integer> {
 
     @Mixin
     private NoiseOption noise;
+
+    @Option(names = "--mcap", description = "Also write run.mcap: the run as an MCAP file for Foxglove (docs/foxglove.md).")
+    private boolean mcap;
 
 
 
@@ -124,20 +129,34 @@ public final class RobotCommand implements Callable<Integer> {
         MissionReport report;
         RobotProcess robot = new RobotProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor,
                 process.logEvery(), process.heartbeat(), noise.level().sensorNoise()), signal);
+        McapRecorder recorder = null;
         try {
+            if (mcap) {
+                recorder = McapRecorder.open(outDir.resolve(McapRecorder.FILE_NAME), worldSpec);
+                robot.alsoTo(recorder::record);
+            }
             report = robot.run();
+        } catch (IOException e) {
+            err.println("cannot write " + McapRecorder.FILE_NAME + " in " + outDir + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
         } catch (DatabaseWait.Unreachable e) {
+            closeQuietly(recorder, outDir);
             output.removeIfEmpty();
             err.println(e.getMessage());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         } catch (StoredMission.Mismatch e) {
+            closeQuietly(recorder, outDir);
             output.removeIfEmpty();
             err.println(e.getMessage());
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
         try {
+            if (recorder != null) {
+                recorder.close();
+            }
             RunCommand.writeReport(report, outDir.resolve("report.json"));
             robot.writeReplay(outDir.resolve("replay.html"), report);
         } catch (IOException e) {
@@ -154,6 +173,19 @@ public final class RobotCommand implements Callable<Integer> {
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;
+    }
+
+    /** A mission that never started leaves no run.mcap behind. */
+    private static void closeQuietly(McapRecorder recorder, Path outDir) {
+        if (recorder == null) {
+            return;
+        }
+        try {
+            recorder.close();
+            Files.deleteIfExists(outDir.resolve(McapRecorder.FILE_NAME));
+        } catch (IOException e) {
+            // nothing was recorded: nothing to report
+        }
     }
 
     private String problem() {

@@ -44,7 +44,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "run",
         mixinStandardHelpOptions = true,
         description = {"Runs a headless mission: the proactive engine drives the simulated robot through a shared database.",
-                "Writes report.json, trace.jsonl, replay.html and trajectory.svg to the output directory.",
+                "Writes report.json, trace.jsonl, replay.html and trajectory.svg to the output directory (and run.mcap with --mcap).",
                 "Exit codes: 0 mission accomplished, 1 mission failed, 2 bad input, 3 infrastructure failure."})
 public final class RunCommand implements Callable<Integer> {
 
@@ -92,6 +92,9 @@ public final class RunCommand implements Callable<Integer> {
 
     @Mixin
     private NoiseOption noise;
+
+    @Option(names = "--mcap", description = "Also write run.mcap: the run as an MCAP file for Foxglove (docs/foxglove.md).")
+    private boolean mcap;
 
     @Option(names = "--quiet", description = "No live progress line.")
     private boolean quiet;
@@ -188,7 +191,7 @@ public final class RunCommand implements Callable<Integer> {
         stdout.flush();
         MissionReport report;
         try {
-            Mission mission = new Mission(options);
+            Mission mission = new Mission(options).mcap(mcap);
             if (live) {
                 var progress = new ProgressPrinter(System.out, spec);
                 mission.onStep(progress::update);

@@ -54,7 +54,8 @@ import picocli.CommandLine.Spec;
         description = {"Runs every combination of worlds x strategies x noise levels x seeds as its own mission, in one JVM,"
                 + " --jobs at a time, each on its own embedded database (or the direct link).",
                 "Writes results.csv (one row per mission, as it ends), summary.html (a sortable table and plots) and a"
-                        + " folder for each mission (report.json, trace.jsonl, replay.html, trajectory.svg, world.json).",
+                        + " folder for each mission (report.json, trace.jsonl, replay.html, trajectory.svg, world.json), with"
+                        + " --mcap also run.mcap.",
                 "Exit codes: 0 every mission accomplished, 1 any was not, 2 bad input (nothing written), 3 infrastructure"
                         + " failure."})
 public final class SweepCommand implements Callable<Integer> {
@@ -106,6 +107,9 @@ public final class SweepCommand implements Callable<Integer> {
     @Option(names = "--out", paramLabel = "DIR",
             description = "Output folder; must not exist or be empty. Default: sweeps/sweep-<yyyyMMdd-HHmmss>/.")
     private Path out;
+
+    @Option(names = "--mcap", description = "Also write run.mcap in each mission's folder: the run for Foxglove (docs/foxglove.md).")
+    private boolean mcap;
 
     @Option(names = "--force", description = "Write into --out even if it is not empty (files of the same names are replaced).")
     private boolean force;
@@ -184,7 +188,8 @@ public final class SweepCommand implements Callable<Integer> {
         List<MissionResult> results;
         try (ResultsCsv csv = new ResultsCsv(outDir.resolve("results.csv"));
              SweepProgress progress = SweepProgress.start(missions.size(), System.console() != null, err)) {
-            MissionRunner runner = new MissionRunner(plan.link(), plan.plugins(), RunCommand::writeReport, sweep::isStopped);
+            MissionRunner runner = new MissionRunner(plan.link(), plan.plugins(), RunCommand::writeReport, sweep::isStopped)
+                    .mcap(mcap);
             results = sweep.run(runner, csv, progress);
         } catch (IOException | UncheckedIOException e) {
             err.println("cannot write the sweep's output in " + outDir + ": " + e.getMessage());

@@ -7,6 +7,7 @@ import java.sql.SQLException;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.function.Consumer;
 import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionReport;
@@ -15,6 +16,7 @@ import org.proactiverobotics.app.mission.ScenarioColours;
 import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.ReplayPage;
 import org.proactiverobotics.app.replay.RobotTracer;
+import org.proactiverobotics.app.replay.TraceStep;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.ScenarioPlugins;
 import org.proactiverobotics.protocol.RunState;
@@ -67,6 +69,7 @@ public final class RobotProcess {
     private final Options options;
     private final ShutdownSignal signal;
     private final ReplayData replay;
+    private Consumer<TraceStep> alsoTo = step -> { };
 
     /**
      * @param options what to run
@@ -76,6 +79,15 @@ public final class RobotProcess {
         this.options = options;
         this.signal = signal;
         this.replay = new ReplayData(Map.of(), options.world().robot().sensorAnglesDeg().size());
+    }
+
+    /**
+     * @param sink also receives every step the replay gets (run.mcap's recorder)
+     * @return this process
+     */
+    public RobotProcess alsoTo(Consumer<TraceStep> sink) {
+        this.alsoTo = sink;
+        return this;
     }
 
     /**
@@ -89,6 +101,7 @@ public final class RobotProcess {
         int robotId = options.robotId();
         Simulation sim = new Simulation(world, options.noise());
         RobotTracer tracer = new RobotTracer(sim, replay);
+        tracer.alsoTo(alsoTo);
         if (!DatabaseWait.await(options.db(), "robot_clock", signal::stopRequested)) {
             return report(sim, Outcome.STOPPED, 0, null, Map.of(), 0);
         }

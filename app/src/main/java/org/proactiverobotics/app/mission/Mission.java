@@ -14,6 +14,7 @@ import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.link.DirectEngineTables;
+import org.proactiverobotics.app.foxglove.McapRecorder;
 import org.proactiverobotics.app.link.DirectLink;
 import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.ReplayPage;
@@ -57,6 +58,7 @@ public final class Mission {
     private SeenReadings seen;
     private String drivingScenario = "none";
     private Map<String, Integer> slots = Map.of();
+    private boolean mcap;
 
     /** @param options what to run */
     public Mission(MissionOptions options) {
@@ -88,8 +90,19 @@ public final class Mission {
     }
 
     /**
-     * Runs the mission to its end and writes report.json's content (returned), trace.jsonl and
-     * trajectory.svg into the output directory.
+     * Also writes run.mcap (the run for Foxglove, docs/foxglove.md) beside trace.jsonl.
+     *
+     * @param enabled whether to
+     * @return this mission
+     */
+    public Mission mcap(boolean enabled) {
+        this.mcap = enabled;
+        return this;
+    }
+
+    /**
+     * Runs the mission to its end and writes report.json's content (returned), trace.jsonl,
+     * replay.html, trajectory.svg and, with {@link #mcap}, run.mcap into the output directory.
      *
      * @param outDir where the trace and the picture go (must exist)
      * @return the report
@@ -149,8 +162,9 @@ public final class Mission {
             drivingScenario = command.scenario();
         });
         ReplayData replay = new ReplayData(slots, sim.robot().distanceSensors().size());
-        try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"))) {
-            this.tracer = new StepTracer(sim, traceWriter, replay, belief);
+        try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"));
+             McapRecorder recorder = mcap ? McapRecorder.open(outDir.resolve(McapRecorder.FILE_NAME), options.world()) : null) {
+            this.tracer = new StepTracer(sim, traceWriter, replay, belief, recorder);
             tracer.seen(seen);
             tracer.slots(slots);
             MissionReport report = loop(sim, engine, controller);

@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.proactiverobotics.app.foxglove.McapRecorder;
 import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.SeenReadings;
 import org.proactiverobotics.app.replay.TraceBelief;
@@ -24,7 +25,7 @@ import org.proactiverobotics.sim2d.Simulation;
 /**
  * Puts together, for each control step of the one-process mission, the engine's decision, what
  * its rules saw and believed ({@link BeliefTracer}), the robot's ground truth and the step's events, and hands the
- * {@link TraceStep} to trace.jsonl and to the replay.
+ * {@link TraceStep} to trace.jsonl, to the replay and, with --mcap, to run.mcap.
  */
 final class StepTracer {
 
@@ -32,6 +33,8 @@ final class StepTracer {
     private final TraceWriter trace;
     private final ReplayData replay;
     private final BeliefTracer belief;
+    /** run.mcap's recorder, or null without --mcap. */
+    private final McapRecorder mcap;
     private SeenReadings seen;
     private Map<String, Integer> slots = Map.of();
     private Map<String, Integer> priorities = Map.of();
@@ -57,11 +60,12 @@ final class StepTracer {
     private double left;
     private double right;
 
-    StepTracer(Simulation sim, TraceWriter trace, ReplayData replay, BeliefTracer belief) {
+    StepTracer(Simulation sim, TraceWriter trace, ReplayData replay, BeliefTracer belief, McapRecorder mcap) {
         this.sim = sim;
         this.trace = trace;
         this.replay = replay;
         this.belief = belief;
+        this.mcap = mcap;
         GroundTruth t = sim.groundTruth();
         this.checkpoints = t.checkpointsReached();
         this.recharges = t.recharges();
@@ -154,6 +158,9 @@ final class StepTracer {
         decidedIteration = -1;
         trace.write(step);
         replay.add(step);
+        if (mcap != null) {
+            mcap.record(step);
+        }
     }
 
     /** Highest priority first, as the decision reads it; built again only when the PriorityArray changed. */

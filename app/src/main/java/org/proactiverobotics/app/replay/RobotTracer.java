@@ -2,6 +2,7 @@ package org.proactiverobotics.app.replay;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.Consumer;
 import org.proactiverobotics.robot.link.CommandRecord;
 import org.proactiverobotics.sim2d.DistanceSensor;
 import org.proactiverobotics.sim2d.GroundTruth;
@@ -19,6 +20,7 @@ public final class RobotTracer {
     private final Simulation sim;
     private final ReplayData data;
     private final List<TraceEvent> pending = new ArrayList<>();
+    private Consumer<TraceStep> alsoTo = step -> { };
     private String scenario = "none";
     private String command = "STOP";
     private long simTimeMs;
@@ -47,6 +49,11 @@ public final class RobotTracer {
         recharges = t.recharges();
         collisions = t.collisions();
         charging = sim.robot().battery().isCharging();
+    }
+
+    /** @param sink also receives every step (run.mcap's recorder) */
+    public void alsoTo(Consumer<TraceStep> sink) {
+        this.alsoTo = sink;
     }
 
     /** @param record a command the robot executes from now on */
@@ -98,9 +105,11 @@ public final class RobotTracer {
             collisions = t.collisions();
             pending.add(TraceEvent.of(TraceEvent.COLLISION));
         }
-        data.add(new TraceStep(iteration, simTimeMs, null, scenario, command, null, x, y, heading, gpsX, gpsY, yaw,
+        TraceStep step = new TraceStep(iteration, simTimeMs, null, scenario, command, null, x, y, heading, gpsX, gpsY, yaw,
                 scan, battery, battery, chargingBefore, sim.robot().leftSpeedMps(), sim.robot().rightSpeedMps(),
-                List.copyOf(pending)));
+                List.copyOf(pending));
+        data.add(step);
+        alsoTo.accept(step);
         pending.clear();
     }
 }

@@ -50,6 +50,7 @@ public final class MissionRunner {
     private final ScenarioPlugins plugins;
     private final ReportWriter reportWriter;
     private final BooleanSupplier stopped;
+    private boolean mcap;
 
     /**
      * @param link         the link every mission uses
@@ -63,6 +64,15 @@ public final class MissionRunner {
         this.plugins = plugins;
         this.reportWriter = reportWriter;
         this.stopped = stopped;
+    }
+
+    /**
+     * @param enabled whether each mission also writes run.mcap in its folder
+     * @return this runner
+     */
+    public MissionRunner mcap(boolean enabled) {
+        this.mcap = enabled;
+        return this;
     }
 
     /**
@@ -83,7 +93,7 @@ public final class MissionRunner {
             Files.writeString(dir.resolve("world.json"), WorldJson.of(mission.world()), StandardCharsets.UTF_8);
             MissionOptions options = new MissionOptions(mission.world(), url, "sa", "", mission.strategy(), 1, link,
                     plugins, mission.noise());
-            Mission run = new Mission(options).onStep(sim -> {
+            Mission run = new Mission(options).mcap(mcap).onStep(sim -> {
                 if (stopped.getAsBoolean()) {
                     throw new Cancelled();
                 }
