@@ -155,10 +155,10 @@ class ReadmeCommandsTest {
     private static Map<Section, List<String>> jarBlocks() throws IOException {
         Map<Section, List<String>> blocks = new LinkedHashMap<>();
         for (Section section : SECTIONS) {
-            String readme = Files.readString(Deployment.root().resolve(section.file()), StandardCharsets.UTF_8);
-            Matcher m = BLOCK.matcher(readme);
+            String text = Files.readString(Deployment.root().resolve(section.file()), StandardCharsets.UTF_8);
+            Matcher m = BLOCK.matcher(text);
             while (m.find()) {
-                if (section.heading().equals(sectionAt(readme, m.start())) && m.group(1).contains(JAR)) {
+                if (section.heading().equals(sectionAt(text, m.start())) && m.group(1).contains(JAR)) {
                     blocks.computeIfAbsent(section, s -> new ArrayList<>()).add(m.group(1));
                 }
             }
