@@ -28,8 +28,8 @@ import org.proactiverobotics.app.Main;
 import org.proactiverobotics.db.TestDatabases;
 
 /**
- * The README's commands as a user pastes them (issue 16): the {@code ```bash} blocks of the
- * sections below that call {@code app/target/proactive.jar} run in order, as one bash script, on
+ * The README's and the docs' commands as a user pastes them (issue 16): the {@code ```bash} blocks of
+ * the sections below that call {@code app/target/proactive.jar} run in order, as one bash script, on
  * the MariaDB of PROACTIVE_TEST_MARIADB_URL; the test fails when one of them fails, and when a
  * section loses its commands (so the README cannot drift away from what works). What a test must
  * change, and only that: the jar is this build's class path in a child JVM (the jar is packaged
@@ -41,9 +41,10 @@ import org.proactiverobotics.db.TestDatabases;
  */
 class ReadmeCommandsTest {
 
-    /** The README sections whose database set-up blocks must be there and must work. */
-    private static final List<String> SECTIONS = List.of("Two commands", "Tests", "Performance",
-            "Two processes and docker compose");
+    /** The sections whose database set-up blocks must be there and must work, in the order they run. */
+    private static final List<Section> SECTIONS = List.of(new Section("README.md", "Two commands"),
+            new Section("docs/deployment.md", "An existing server: schema and users"),
+            new Section("docs/testing.md", "On MariaDB too"), new Section("docs/performance.md", "How to measure"));
     private static final String JAR = "java -jar app/target/proactive.jar";
     private static final Pattern README_URL = Pattern.compile("jdbc:mariadb://127\\.0\\.0\\.1:3306/(\\w+)\\?user=root&password=");
     private static final Pattern SERVER = Pattern.compile("(jdbc:(?:mariadb|mysql)://[^/?]+)/([^?]*)(\\?.*)?");
@@ -54,9 +55,9 @@ class ReadmeCommandsTest {
 
     @Test
     void everySectionStillHasItsCommands() throws IOException {
-        Map<String, List<String>> blocks = jarBlocks();
-        for (String section : SECTIONS) {
-            assertThat(blocks.get(section)).as("README section '%s' has a ```bash block running %s", section, JAR)
+        Map<Section, List<String>> blocks = jarBlocks();
+        for (Section section : SECTIONS) {
+            assertThat(blocks.get(section)).as("%s has a ```bash block running %s", section, JAR)
                     .isNotNull().isNotEmpty();
         }
         String all = String.join("\n", blocks.values().stream().flatMap(List::stream).toList());
@@ -142,15 +143,24 @@ class ReadmeCommandsTest {
         return l;
     }
 
-    /** The README's ```bash blocks that run the jar, by section, in order. */
-    private static Map<String, List<String>> jarBlocks() throws IOException {
-        String readme = Files.readString(Deployment.root().resolve("README.md"), StandardCharsets.UTF_8);
-        Map<String, List<String>> blocks = new LinkedHashMap<>();
-        Matcher m = BLOCK.matcher(readme);
-        while (m.find()) {
-            String section = sectionAt(readme, m.start());
-            if (SECTIONS.contains(section) && m.group(1).contains(JAR)) {
-                blocks.computeIfAbsent(section, s -> new ArrayList<>()).add(m.group(1));
+    /** A {@code ## } section of a Markdown file of the repository. */
+    private record Section(String file, String heading) {
+        @Override
+        public String toString() {
+            return file + " section '" + heading + "'";
+        }
+    }
+
+    /** The ```bash blocks of {@link #SECTIONS} that run the jar, by section, in that order. */
+    private static Map<Section, List<String>> jarBlocks() throws IOException {
+        Map<Section, List<String>> blocks = new LinkedHashMap<>();
+        for (Section section : SECTIONS) {
+            String text = Files.readString(Deployment.root().resolve(section.file()), StandardCharsets.UTF_8);
+            Matcher m = BLOCK.matcher(text);
+            while (m.find()) {
+                if (section.heading().equals(sectionAt(text, m.start())) && m.group(1).contains(JAR)) {
+                    blocks.computeIfAbsent(section, s -> new ArrayList<>()).add(m.group(1));
+                }
             }
         }
         return blocks;
