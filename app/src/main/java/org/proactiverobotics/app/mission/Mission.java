@@ -227,8 +227,8 @@ public final class Mission {
         String database = options.link() == MissionOptions.Link.DIRECT ? "direct"
                 : MissionReport.databaseKind(options.jdbcUrl());
         return MissionReport.of(sim, outcome, options.strategy().name(), database, wallS, steps, engine.engine().iteration(),
-                commandWins, failures, poseError.result(), MissionReport.Timing.rounded(physicsNs / 1e6 / steps, robotNs / 1e6 / steps,
-                        engineNs / 1e6 / steps));
+                commandWins, failures, poseError.result(), MissionReport.Timing.rounded(physicsNs / 1e6 / steps,
+                        robotNs / 1e6 / steps, engineNs / 1e6 / steps));
     }
 
     /** Every decision goes to trace.jsonl (the command it leads to is sent in the next iteration). */
