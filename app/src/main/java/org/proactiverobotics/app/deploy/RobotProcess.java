@@ -7,6 +7,8 @@ import java.sql.SQLException;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.mission.Mission;
@@ -17,6 +19,7 @@ import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.ReplayPage;
 import org.proactiverobotics.app.replay.RobotTracer;
 import org.proactiverobotics.app.replay.TraceStep;
+import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.ScenarioPlugins;
 import org.proactiverobotics.protocol.RunState;
@@ -111,7 +114,9 @@ public final class RobotProcess {
         try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password());
              JdbcRobotLink link = new JdbcRobotLink(pool);
              ProactiveController robot = new ProactiveController(sim, link, config)) {
-            checkStoredMission(pool, robotId, world);
+            if (!checkStoredMission(pool, robotId, world)) {
+                return report(sim, Outcome.STOPPED, 0, null, Map.of(), 0);
+            }
             robot.onCommand(c -> {
                 wins.merge(c.scenario(), 1L, Long::sum);
                 tracer.command(c);
@@ -201,12 +206,42 @@ public final class RobotProcess {
         }
     }
 
-    /** A robot may not take over another world's mission rows (see {@link StoredMission}). */
-    private static void checkStoredMission(HikariDataSource pool, int robotId, WorldSpec world) {
-        try {
-            StoredMission.check(pool, robotId, Missions.of(world));
-        } catch (SQLException e) {
-            throw new IllegalStateException("reading the stored mission of robot " + robotId + ": " + e.getMessage(), e);
+    /**
+     * A robot may not take over another world's mission rows (see {@link StoredMission}). This is
+     * the pool's first use: on a busy machine its first connection can come later than the pool's
+     * short wait although the database answers, so a failure waiting can cure is retried after the
+     * database is seen to answer again ({@link DatabaseWait}, whose --wait-s bounds only a database
+     * that does not answer at all).
+     *
+     * @return true once checked, false when a stop came first
+     */
+    private boolean checkStoredMission(HikariDataSource pool, int robotId, WorldSpec world) throws DatabaseWait.Unreachable {
+        Backoff backoff = new Backoff(100, 2_000, System::nanoTime);
+        for (int attempt = 1; ; attempt++) {
+            try {
+                StoredMission.check(pool, robotId, Missions.of(world));
+                if (attempt > 1) {
+                    LOG.info("robot {}: stored mission read (attempt {})", robotId, attempt);
+                }
+                return true;
+            } catch (SQLException e) {
+                DatabaseProblem problem = DatabaseProblem.of(e, options.db().url(), "checkpoints");
+                if (!problem.worthWaiting()) {
+                    throw new DatabaseWait.Unreachable(problem, problem.message());
+                }
+                LOG.warn("robot {}: reading the stored mission failed (attempt {}): {}; the database is busy or away:"
+                        + " retrying once it answers", robotId, attempt, problem.message());
+                backoff.failed();
+                while (!backoff.ready()) {
+                    if (signal.stopRequested()) {
+                        return false;
+                    }
+                    LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(20));
+                }
+                if (!DatabaseWait.await(options.db(), "checkpoints", signal::stopRequested)) {
+                    return false;
+                }
+            }
         }
     }
 }

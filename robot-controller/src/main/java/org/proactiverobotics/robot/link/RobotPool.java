@@ -8,7 +8,10 @@ import org.proactiverobotics.db.Databases;
  * The robot's connection pool: the project's defaults ({@link Databases#config}) with a short
  * connection time-out, so that a database that is gone costs the control loop a fraction of a
  * second per retry, not the usual 30 s; on MariaDB / MySQL also a socket time-out
- * ({@value #SOCKET_TIMEOUT_MS} ms), so that a server that hangs mid-statement cannot freeze it.
+ * ({@value #SOCKET_TIMEOUT_MS} ms), so that a server that hangs mid-statement cannot freeze it. The
+ * driver's own time to open a connection ({@value #DRIVER_CONNECT_TIMEOUT_MS} ms) is longer than the
+ * pool's wait: the pool opens connections on a thread of its own, so a server slow to greet a new
+ * connection (a starved machine) still ends up giving one, while the control loop waits no longer.
  */
 public final class RobotPool {
 
@@ -17,6 +20,13 @@ public final class RobotPool {
 
     /** The longest wait for a MariaDB / MySQL server's answer to one statement, milliseconds. */
     public static final int SOCKET_TIMEOUT_MS = 2_000;
+
+    /**
+     * The longest a MariaDB / MySQL driver may take to open one connection (TCP connect and the
+     * server's greeting), milliseconds: as long as the start-up's wait gives one attempt
+     * ({@code DbOptions.connect}), so that a busy server is not taken for a gone one.
+     */
+    public static final int DRIVER_CONNECT_TIMEOUT_MS = 5_000;
 
     private RobotPool() {
     }
@@ -34,12 +44,12 @@ public final class RobotPool {
         config.setConnectionTimeout(Math.max(250, connectionTimeoutMs));
         config.setValidationTimeout(250);
         config.setMaximumPoolSize(3); // the link, a read beside it, and the handshake's locks (HandshakeLocks)
-        config.setMinimumIdle(1);
+        config.setMinimumIdle(3); // all opened at start: on a busy server a connection opened mid-mission can come too late for a step
         config.setPoolName("proactive-robot");
         if (jdbcUrl.startsWith("jdbc:mariadb:") || jdbcUrl.startsWith("jdbc:mysql:")) {
             // A server that stops answering must not freeze the control loop (both drivers: ms).
             config.addDataSourceProperty("socketTimeout", String.valueOf(SOCKET_TIMEOUT_MS));
-            config.addDataSourceProperty("connectTimeout", String.valueOf(Math.max(250, connectionTimeoutMs)));
+            config.addDataSourceProperty("connectTimeout", String.valueOf(DRIVER_CONNECT_TIMEOUT_MS));
         }
         return new HikariDataSource(config);
     }
