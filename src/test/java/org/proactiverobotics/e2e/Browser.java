@@ -5,7 +5,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Set;
 import java.util.logging.Level;
+import java.util.stream.Collectors;
 import org.junit.jupiter.api.Assumptions;
 import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.chrome.ChromeDriverService;
@@ -55,7 +57,10 @@ final class Browser implements AutoCloseable {
         options.setCapability("goog:loggingPrefs", logs);
         ChromeDriverService service = new ChromeDriverService.Builder().usingDriverExecutable(CHROMEDRIVER.toFile())
                 .usingAnyFreePort().build();
+        Set<ProcessHandle> before = ProcessHandle.current().children().collect(Collectors.toSet());
         ChromeDriver driver = new ChromeDriver(service, options);
+        // the driver's process (and the browser under it) ends with the test however it ends, as every process a test starts
+        ProcessHandle.current().children().filter(h -> !before.contains(h)).forEach(StartedProcesses::register);
         driver.manage().timeouts().scriptTimeout(Duration.ofSeconds(20));
         return new Browser(driver, profile);
     }

@@ -76,11 +76,11 @@ class DeployCommandsTest extends CommandLineTest {
     @Test
     void anUnreachableDatabaseIsWaitedForWithStatusLinesThenExitsThree() throws Exception {
         Path log = tmp.resolve("robot.log");
-        Process robot = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+        Process robot = StartedProcesses.start(new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
                 System.getProperty("java.class.path"), Main.class.getName(), "robot",
                 "--world", Deployment.root().resolve("worlds/reference-arena.json").toString(),
                 "--db", "jdbc:mysql://127.0.0.1:1/proactive", "--wait-s", "2", "--out", tmp.resolve("out").toString())
-                .redirectErrorStream(true).redirectOutput(log.toFile()).start();
+                .redirectErrorStream(true).redirectOutput(log.toFile()));
         assertThat(robot.waitFor(60, TimeUnit.SECONDS)).isTrue();
         String text = Files.readString(log);
         assertThat(robot.exitValue()).as(text).isEqualTo(3);

@@ -26,7 +26,8 @@ import org.yaml.snakeyaml.Yaml;
  * as data; a fresh MariaDB database initialised by the very scripts the MySQL container runs
  * (schema.sql through the mysql client, then deploy/mysql-init/02-users.sh sourced with a
  * {@code docker_process_sql} of our own), with users of its own; and the compose services'
- * commands started as OS processes against it.
+ * commands started as OS processes against it ({@link StartedProcesses}: ended, each with its
+ * tree, at {@link #close()} and in any case when the test is over).
  */
 final class Deployment implements AutoCloseable {
 
@@ -118,10 +119,14 @@ final class Deployment implements AutoCloseable {
         if (stdin != null) {
             pb.redirectInput(stdin.toFile());
         }
-        Process p = pb.start();
-        String output = new String(p.getInputStream().readAllBytes());
-        if (!p.waitFor(60, TimeUnit.SECONDS) || p.exitValue() != 0) {
-            throw new IllegalStateException(String.join(" ", command) + " failed: " + output);
+        Process p = StartedProcesses.start(pb);
+        try {
+            String output = new String(p.getInputStream().readAllBytes());
+            if (!p.waitFor(60, TimeUnit.SECONDS) || p.exitValue() != 0) {
+                throw new IllegalStateException(String.join(" ", command) + " failed: " + output);
+            }
+        } finally {
+            StartedProcesses.end(p);
         }
     }
 
@@ -181,7 +186,7 @@ final class Deployment implements AutoCloseable {
         pb.environment().put("PROACTIVE_DB_PASSWORD", service.equals("engine") ? ENGINE_PASSWORD
                 : service.equals("watch") ? VIEWER_PASSWORD : ROBOT_PASSWORD);
         pb.environment().remove("PROACTIVE_LOG_LEVEL");
-        Process p = pb.start();
+        Process p = StartedProcesses.start(pb);
         processes.add(p);
         return p;
     }
@@ -225,11 +230,8 @@ final class Deployment implements AutoCloseable {
 
     @Override
     public void close() throws Exception {
-        for (Process p : processes) {
-            if (p.isAlive()) {
-                p.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
-            }
-        }
+        // before the database goes: a process left running would write into a dropped database
+        StartedProcesses.end(processes);
         try (Connection c = DriverManager.getConnection(adminUrl); Statement s = c.createStatement()) {
             s.execute("DROP DATABASE IF EXISTS " + database);
             s.execute("DROP USER IF EXISTS '" + engineUser + "'@'%', '" + robotUser + "'@'%', '" + viewerUser + "'@'%'");

@@ -98,11 +98,10 @@ class ReadmeCommandsTest {
         pb.environment().put("PROACTIVE_CP", System.getProperty("java.class.path"));
         pb.environment().remove(TestDatabases.MARIADB_URL_VARIABLE); // the README sets it itself
         try {
-            Process bash = pb.start();
+            Process bash = StartedProcesses.start(pb);
             boolean ended = bash.waitFor(5, TimeUnit.MINUTES);
-            if (!ended) {
-                bash.destroyForcibly();
-            }
+            // the script and what it left running (a failed block leaves its background jobs) end before the databases go
+            StartedProcesses.end(bash);
             String output = Files.readString(log, StandardCharsets.UTF_8);
             assertThat(ended).as(output).isTrue();
             assertThat(bash.exitValue()).as("a README command failed (the last + line):\n" + output).isZero();
