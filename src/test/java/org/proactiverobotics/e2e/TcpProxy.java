@@ -17,7 +17,8 @@ import java.util.concurrent.atomic.AtomicLong;
  * A database outage for the tests, since the shared MariaDB cannot be stopped: a TCP proxy on a
  * loopback ephemeral port forwarding to the database (loopback only). {@link #cut(Duration)}
  * resets every open connection and refuses new ones (accepted, then reset at once) for a while,
- * as a stopped server would; then it forwards again.
+ * as a stopped server would; then it forwards again. {@link #slowToAnswer(Duration)} makes it a
+ * server that is up but busy: every new connection waits that long before the database sees it.
  */
 final class TcpProxy implements AutoCloseable {
 
@@ -30,6 +31,7 @@ final class TcpProxy implements AutoCloseable {
     private volatile long refuseUntilNanos;
     private volatile boolean cutting;
     private volatile boolean closed;
+    private volatile long answerDelayNanos;
 
     /**
      * @param targetHost the database host: a loopback address
@@ -72,6 +74,14 @@ final class TcpProxy implements AutoCloseable {
         open.clear();
     }
 
+    /**
+     * From now on, every new connection is accepted at once but reaches the database only after
+     * this delay, as on a server starved of processor time (returns at once).
+     */
+    void slowToAnswer(Duration delay) {
+        answerDelayNanos = delay.toNanos();
+    }
+
     /** @return whether new connections are refused now */
     boolean down() {
         return cutting && System.nanoTime() - refuseUntilNanos < 0;
@@ -90,22 +100,36 @@ final class TcpProxy implements AutoCloseable {
                 reset(client);
                 continue;
             }
-            Socket upstream = new Socket();
-            try {
-                upstream.connect(target, 2_000);
-                client.setTcpNoDelay(true);
-                upstream.setTcpNoDelay(true);
-            } catch (IOException e) {
-                reset(client);
-                reset(upstream);
-                continue;
+            long delay = answerDelayNanos;
+            if (delay > 0) {
+                Thread slow = new Thread(() -> {
+                    java.util.concurrent.locks.LockSupport.parkNanos(delay);
+                    forward(client);
+                }, "tcp-proxy-slow");
+                slow.setDaemon(true);
+                slow.start();
+            } else {
+                forward(client);
             }
-            accepted.incrementAndGet();
-            open.add(client);
-            open.add(upstream);
-            pump(client, upstream);
-            pump(upstream, client);
         }
+    }
+
+    private void forward(Socket client) {
+        Socket upstream = new Socket();
+        try {
+            upstream.connect(target, 2_000);
+            client.setTcpNoDelay(true);
+            upstream.setTcpNoDelay(true);
+        } catch (IOException e) {
+            reset(client);
+            reset(upstream);
+            return;
+        }
+        accepted.incrementAndGet();
+        open.add(client);
+        open.add(upstream);
+        pump(client, upstream);
+        pump(upstream, client);
     }
 
     private void pump(Socket from, Socket to) {

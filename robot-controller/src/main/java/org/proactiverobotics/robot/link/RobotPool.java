@@ -2,6 +2,7 @@ package org.proactiverobotics.robot.link;
 
 import com.zaxxer.hikari.HikariConfig;
 import com.zaxxer.hikari.HikariDataSource;
+import java.sql.DriverManager;
 import org.proactiverobotics.db.Databases;
 
 /**
@@ -51,7 +52,12 @@ public final class RobotPool {
             config.addDataSourceProperty("socketTimeout", String.valueOf(SOCKET_TIMEOUT_MS));
             config.addDataSourceProperty("connectTimeout", String.valueOf(DRIVER_CONNECT_TIMEOUT_MS));
         }
-        return new HikariDataSource(config);
+        int loginTimeoutS = DriverManager.getLoginTimeout();
+        HikariDataSource pool = new HikariDataSource(config);
+        // HikariCP sets the JVM-wide login time-out from the pool's short wait (1 s), and the MySQL driver bounds a
+        // server's greeting with it: a busy server would never give this pool, nor the start-up's wait, a connection
+        DriverManager.setLoginTimeout(loginTimeoutS);
+        return pool;
     }
 
     /** {@link #open(String, String, String, long)} with {@value #DEFAULT_CONNECTION_TIMEOUT_MS} ms. */
