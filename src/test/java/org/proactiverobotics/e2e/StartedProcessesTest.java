@@ -77,8 +77,7 @@ class StartedProcessesTest {
         try {
             LauncherDiscoveryRequest request = LauncherDiscoveryRequestBuilder.request()
                     .selectors(selectMethod(LeavingTests.class, method))
-                    .configurationParameter("junit.jupiter.extensions.autodetection.enabled", "true")
-                    .build();
+                    .build(); // configured as surefire's run is: junit-platform.properties turns EndsStartedProcesses on
             Launcher launcher = LauncherFactory.create();
             SummaryGeneratingListener listener = new SummaryGeneratingListener();
             launcher.execute(request, listener);
