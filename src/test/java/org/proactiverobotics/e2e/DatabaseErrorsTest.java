@@ -120,10 +120,10 @@ class DatabaseErrorsTest extends CommandLineTest {
     void anH2FileDatabaseInAFolderThatCannotBeMadeIsOneLineOfTheProcessAndWritesNothing() throws Exception {
         Path file = Files.writeString(tmp.resolve("not-a-folder"), "keep me");
         Path outDir = tmp.resolve("out");
-        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+        Process p = StartedProcesses.start(new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Dlogback.configurationFile=logback.xml", "-cp", System.getProperty("java.class.path"), Main.class.getName(),
                 "run", "--db", "jdbc:h2:" + file.resolve("sub/mission"), "--wait-s", "2", "--quiet", "--out", outDir.toString())
-                .redirectErrorStream(true).start();
+                .redirectErrorStream(true));
         String printed = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
         assertThat(p.exitValue()).as(printed).isEqualTo(3);
