@@ -181,16 +181,29 @@ public final class Lockstep implements StepGate {
             if (now - nextStatus >= 0) {
                 reported = true;
                 nextStatus = now + STATUS_EVERY_NANOS;
-                LOG.info("robot {}: waiting for the engine {}; {} ({} s so far)", robotId, what,
+                LOG.info("robot {}: waiting for the engine {}; {} ({} s so far{}); waited for as long as it takes",
+                        robotId, what,
                         tick.map(t -> t.runId() == runId ? "it last served step " + t.step()
                                 : "it last served run " + t.runId()).orElse("no engine has served this robot yet"),
-                        String.format(Locale.ROOT, "%.0f", (now - start) / 1e9));
+                        String.format(Locale.ROOT, "%.0f", (now - start) / 1e9), paceSaid(now - start));
             }
             long pause = pacing.pauseNanos(now - start, polls);
             if (!inServer || now - callStart < pause) { // a wait in the server that lasted longer is the pause
                 LockSupport.parkNanos(pause);
             }
         }
+    }
+
+    /**
+     * The wait in the engine's own terms: how many of its recent steps would have fit in it, so
+     * that a line tells an engine that is a little slow from one that has stopped serving.
+     */
+    private String paceSaid(long waitedNanos) {
+        long pace = pacing.expectedNanos();
+        if (pace <= 0) {
+            return "";
+        }
+        return String.format(Locale.ROOT, ", %d times the %.1f ms its recent steps took", waitedNanos / pace, pace / 1e6);
     }
 
     /** Calls until it succeeds, backing off after failures; null when a stop was requested. */
