@@ -198,7 +198,7 @@ class McapReaderTest extends CommandLineTest {
 
     private static boolean runs(String... command) {
         try {
-            Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+            Process p = StartedProcesses.start(new ProcessBuilder(command).redirectErrorStream(true));
             p.getInputStream().readAllBytes();
             return p.waitFor(60, TimeUnit.SECONDS) && p.exitValue() == 0;
         } catch (IOException | InterruptedException e) {
@@ -217,7 +217,7 @@ class McapReaderTest extends CommandLineTest {
     }
 
     private static synchronized String exec(Path dir, List<String> command) throws IOException, InterruptedException {
-        Process p = new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true).start();
+        Process p = StartedProcesses.start(new ProcessBuilder(command).directory(dir.toFile()).redirectErrorStream(true));
         String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertThat(p.waitFor(300, TimeUnit.SECONDS)).as(String.join(" ", command)).isTrue();
         assertThat(p.exitValue()).as(String.join(" ", command) + ":\n" + output).isZero();
