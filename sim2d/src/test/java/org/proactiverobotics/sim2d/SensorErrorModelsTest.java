@@ -189,6 +189,33 @@ class SensorErrorModelsTest {
     }
 
     @Test
+    void smallNoiseIsTheWhiteNoiseOfBeforeDrawForDraw() {
+        WorldSpec world = Worlds.empty(5.0, 0.3, -0.2, 20.0)
+                .withObstacles(List.of(WorldSpec.Obstacle.box(0.9, 0.0, 0.2, 3.0, 0.0)));
+        Simulation truth = new Simulation(world);
+        Simulation small = new Simulation(world, SensorNoise.SMALL);
+        for (Simulation s : List.of(truth, small)) {
+            s.robot().setWheelSpeeds(0.1, 0.15);
+        }
+        for (long step = 0; step < 200; step++) {
+            double[] gps = small.robot().gps().getValues();
+            double[] exact = truth.robot().gps().getValues();
+            assertThat(gps[0]).isEqualTo(exact[0] + 0.01 * SensorNoise.gaussian(world.seed(), step, 0));
+            assertThat(gps[1]).isEqualTo(exact[1] + 0.01 * SensorNoise.gaussian(world.seed(), step, 1));
+            double yaw = truth.robotBody().getTransform().getRotationAngle();
+            assertThat(small.robot().inertialUnit().getRollPitchYaw()[2]).isEqualTo(
+                    Simulation.normalizeAngle(yaw + Math.toRadians(0.5) * SensorNoise.gaussian(world.seed(), step, 2)));
+            for (int i = 0; i < 12; i++) {
+                DistanceSensor ray = small.robot().distanceSensors().get(i);
+                double d = truth.robot().distanceSensors().get(i).getValue() + 0.01 * SensorNoise.gaussian(world.seed(), step, 3 + i);
+                assertThat(ray.getValue()).isEqualTo(Math.max(0.0, Math.min(ray.getRangeM(), d)));
+            }
+            truth.step();
+            small.step();
+        }
+    }
+
+    @Test
     void badFiguresAreRefused() {
         assertThatThrownBy(() -> new GpsBias(0.03, 0.0)).hasMessageContaining("correlationTimeS");
         assertThatThrownBy(() -> new WheelSlip(1.0, 0.0)).hasMessageContaining("below 1");
