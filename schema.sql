@@ -108,11 +108,28 @@ CREATE TABLE IF NOT EXISTS recharge_station (
 );
 
 -- ======================================================================================
+-- Sensors beyond the paper's
+-- ======================================================================================
+
+-- Wheel odometry (sensor 'ODOMETRY'): how far each wheel rolled since the robot's previous
+-- odometry reading, metres, positive forwards (turning on the spot: opposite signs). Summing a
+-- robot's rows in sim_time_ms order gives each wheel's whole travel (until pruning drops the
+-- oldest). The wheels' own count: a wheel spinning against a wall still rolls.
+CREATE TABLE IF NOT EXISTS odometry (
+  id          BIGINT AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT    NOT NULL,
+  sim_time_ms BIGINT NOT NULL,
+  left_m      DOUBLE NOT NULL,
+  right_m     DOUBLE NOT NULL,
+  INDEX idx_odometry_time (robot_id, sim_time_ms, id)
+);
+
+-- ======================================================================================
 -- The engine's own tables
 -- ======================================================================================
 
 -- Requests for fresh sensor data (Data acquisition scenario). sensor is one of
--- 'GPS', 'IU', 'DS', 'BATTERY'. Pending while answered_sim_time_ms is NULL; the robot
+-- 'GPS', 'IU', 'DS', 'BATTERY', 'ODOMETRY'. Pending while answered_sim_time_ms is NULL; the robot
 -- answers by writing a reading and setting answered_sim_time_ms.
 CREATE TABLE IF NOT EXISTS sensor_requests (
   id                    BIGINT      AUTO_INCREMENT PRIMARY KEY,

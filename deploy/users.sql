@@ -20,6 +20,7 @@ GRANT SELECT ON `@DATABASE@`.gps_stored_values TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.iudata TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.distance_sensor_data TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.battery_level TO '@ENGINE_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.odometry TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.battery_recharged TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.robot_clock TO '@ENGINE_USER@'@'@HOST@';
@@ -41,6 +42,7 @@ GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.gps_stored_values TO '@ROBOT_USER@'
 GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.iudata TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.distance_sensor_data TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.battery_level TO '@ROBOT_USER@'@'@HOST@';
+GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.odometry TO '@ROBOT_USER@'@'@HOST@';
 -- it marks requests answered, and prunes answered ones
 GRANT SELECT, UPDATE (answered_sim_time_ms) ON `@DATABASE@`.sensor_requests TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.engine_comments TO '@ROBOT_USER@'@'@HOST@';
@@ -59,6 +61,7 @@ GRANT SELECT ON `@DATABASE@`.gps_stored_values TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.iudata TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.distance_sensor_data TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.battery_level TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.odometry TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.checkpoints TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.rule_failures TO '@VIEWER_USER@'@'@HOST@';

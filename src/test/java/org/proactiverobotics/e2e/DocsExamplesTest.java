@@ -41,8 +41,8 @@ class DocsExamplesTest extends CommandLineTest {
     static final String INVALID_WORLD = "<!-- invalid-world -->";
     private static final Pattern JSON_BLOCK = Pattern.compile("(?m)^```json\\n(.*?)^```", Pattern.DOTALL);
 
-    /** What the robot process's report leaves out: its database user may read neither table. */
-    private static final Set<String> ENGINE_ONLY_REPORT_KEYS = Set.of("strategy", "ruleFailures");
+    /** What the robot process's report leaves out: its database user may read neither table, nor see the engine's belief. */
+    private static final Set<String> ENGINE_ONLY_REPORT_KEYS = Set.of("strategy", "ruleFailures", "poseError");
     /** The fields a trace.jsonl line has only when there is something to say (schemaVersion 3). */
     private static final Set<String> OPTIONAL_TRACE_KEYS = Set.of("belief", "route", "mapDelta", "reason");
 

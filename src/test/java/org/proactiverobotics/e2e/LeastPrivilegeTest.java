@@ -92,6 +92,21 @@ class LeastPrivilegeTest {
     }
 
     @Test
+    void theRobotWritesAndPrunesOdometryTheEngineOnlyReadsIt() throws Exception {
+        asRobot("INSERT INTO odometry (robot_id, sim_time_ms, left_m, right_m) VALUES (98, 32, 0.016, 0.016)");
+        asEngine("SELECT left_m, right_m FROM odometry WHERE robot_id = 98");
+        assertThatThrownBy(() -> asEngine("INSERT INTO odometry (robot_id, sim_time_ms, left_m, right_m) VALUES (98, 64, 1, 1)"))
+                .isInstanceOf(SQLException.class).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asEngine("UPDATE odometry SET left_m = 0 WHERE robot_id = 98"))
+                .isInstanceOf(SQLException.class).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asEngine("DELETE FROM odometry WHERE robot_id = 98"))
+                .isInstanceOf(SQLException.class).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asRobot("UPDATE odometry SET left_m = 0 WHERE robot_id = 98"))
+                .isInstanceOf(SQLException.class).hasMessageContaining("denied");
+        asRobot("DELETE FROM odometry WHERE robot_id = 98"); // retention, and a new run starting clean
+    }
+
+    @Test
     void neitherMayDropAlterCreateOrGrant() {
         for (String user : List.of("engine", "robot")) {
             for (String sql : List.of("DROP TABLE engine_comments", "ALTER TABLE gps_stored_values ADD COLUMN x INT",
@@ -111,12 +126,13 @@ class LeastPrivilegeTest {
     @Test
     void theViewerMayReadWhatWatchShowsAndNothingElseNorWriteAnything() throws Exception {
         for (String table : List.of("engine_comments", "gps_stored_values", "iudata", "distance_sensor_data",
-                "battery_level", "checkpoints", "recharge_station", "rule_failures", "strategy")) {
+                "battery_level", "odometry", "checkpoints", "recharge_station", "rule_failures", "strategy")) {
             asViewer("SELECT COUNT(*) FROM " + table);
         }
         for (String sql : List.of("INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command)"
                         + " VALUES (1, 1, 0, 'X', 'STOP')", "DELETE FROM strategy", "UPDATE checkpoints SET reached = TRUE",
                 "INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 0, 0, 0)",
+                "INSERT INTO odometry (robot_id, sim_time_ms, left_m, right_m) VALUES (1, 0, 0, 0)", "DELETE FROM odometry",
                 "SELECT * FROM engine_state", "SELECT * FROM sensor_requests", "DROP TABLE engine_comments",
                 "CREATE TABLE intruder (id INT)", "GRANT SELECT ON strategy TO '" + deployment.robotUser + "'@'%'")) {
             assertThatThrownBy(() -> asViewer(sql)).as("viewer: " + sql).isInstanceOf(SQLException.class);
@@ -132,7 +148,7 @@ class LeastPrivilegeTest {
         List<String> engineGrants = grants(deployment.engineUser);
         List<String> robotGrants = grants(deployment.robotUser);
         List<String> viewerGrants = grants(deployment.viewerUser);
-        assertThat(viewerGrants).hasSize(11); // USAGE and ten SELECTs
+        assertThat(viewerGrants).hasSize(12); // USAGE and eleven SELECTs
         assertThat(engineGrants).hasSizeGreaterThan(10);
         StringWriter err = new StringWriter();
         CommandLine cl = Main.commandLine();

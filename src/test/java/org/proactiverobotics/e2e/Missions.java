@@ -37,7 +37,7 @@ final class Missions {
             return new MissionReport(r.world(), r.success(), r.outcome(), r.strategy(), "-", r.checkpointsReached(),
                     r.checkpointsTotal(), r.simTimeS(), 0, 0, r.controlSteps(), r.engineIterations(), r.distanceM(),
                     r.collisions(), r.minClearanceM(), r.minBattery(), r.finalBattery(), r.recharges(), r.commandWins(),
-                    r.ruleFailures(), null);
+                    r.ruleFailures(), r.poseError(), null);
         }
     }
 

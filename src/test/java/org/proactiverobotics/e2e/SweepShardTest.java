@@ -83,7 +83,7 @@ class SweepShardTest extends CommandLineTest {
             assertThat(out.toString()).contains("Merged " + n + (n == 1 ? " shard" : " shards") + ": 0 of 4 missions accomplished");
             Path merged = cut.resolve("results.csv");
             assertThat(rowsLessWallTime(merged)).isEqualTo(expected);
-            assertThat(Files.readAllLines(merged).subList(1, 5)).extracting(l -> l.substring(l.lastIndexOf(',') + 1, l.lastIndexOf(',') + 5))
+            assertThat(missionColumn(merged)).extracting(m -> m.substring(0, 4))
                     .as("rows in the missions' order").containsExactly("0001", "0002", "0003", "0004");
             String summary = Files.readString(cut.resolve("summary.html"));
             for (String mission : expected.keySet()) {
@@ -196,6 +196,14 @@ class SweepShardTest extends CommandLineTest {
         Files.copy(shard.resolve("sweep.json"), to.resolve("sweep.json"));
         Files.write(to.resolve("results.csv"), edit.apply(Files.readAllLines(shard.resolve("results.csv"))));
         return to;
+    }
+
+    /** results.csv's mission column, in the file's order. */
+    private static List<String> missionColumn(Path csv) throws IOException {
+        try (Reader in = Files.newBufferedReader(csv, StandardCharsets.UTF_8);
+             Stream<CSVRecord> records = CSVFormat.DEFAULT.builder().setHeader().setSkipHeaderRecord(true).get().parse(in).stream()) {
+            return records.map(r -> r.get("mission")).toList();
+        }
     }
 
     private static Map<String, Map<String, String>> rowsLessWallTime(Path csv) throws IOException {

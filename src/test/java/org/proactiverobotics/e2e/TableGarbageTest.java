@@ -38,7 +38,7 @@ class TableGarbageTest {
             "\u0412\u041f\u0415\u0420\u0401\u0414 0.3 \u2603", "x".repeat(255), "", "TURN_LEFT -0.2", "DRIVE 0.1 0.1 0.1",
             "RECHARGE' OR '1'='1");
     /** Sensor names the robot does not know; the column holds 16 characters. */
-    static final List<String> GARBAGE_SENSORS = List.of("gps", "GPS ", " DS", "'; DROP TABLE --", "\u2603\u2603", "NaN", "", "battery");
+    static final List<String> GARBAGE_SENSORS = List.of("gps", "GPS ", " DS", "'; DROP TABLE --", "\u2603\u2603", "NaN", "", "battery", "Odometry");
 
     @ParameterizedTest
     @EnumSource(DatabaseKind.class)
@@ -139,7 +139,7 @@ class TableGarbageTest {
 
     /** Every table of the schema is still there, the mission rows as seeded. */
     private static void assertTablesIntact(TestDatabase db) throws SQLException {
-        for (String table : List.of("gps_stored_values", "iudata", "distance_sensor_data", "battery_level", "battery_recharged",
+        for (String table : List.of("gps_stored_values", "iudata", "distance_sensor_data", "battery_level", "odometry", "battery_recharged",
                 "checkpoints", "engine_comments", "recharge_station", "sensor_requests", "strategy", "engine_state",
                 "engine_queue", "rule_failures")) {
             db.count(table); // throws when the table is gone

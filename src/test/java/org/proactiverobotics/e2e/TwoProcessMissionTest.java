@@ -80,6 +80,8 @@ class TwoProcessMissionTest {
         // the robot's user may read neither the strategy nor rule_failures: left out, not made up (it was -1)
         assertThat(report.has("strategy")).isFalse();
         assertThat(report.has("ruleFailures")).isFalse();
+        // nor can it see what the engine believed: no pose error rather than a made-up one
+        assertThat(report.has("poseError")).isFalse();
         assertThat(Files.readString(robotLog)).contains("the engine acknowledged run").contains("robot 1: step 500,")
                 .doesNotContain("Exception");
         assertThat(tmp.resolve("robot.beat")).exists();

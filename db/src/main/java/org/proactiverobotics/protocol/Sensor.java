@@ -14,7 +14,9 @@ public enum Sensor {
     /** Every distance sensor, one row each, to {@code distance_sensor_data}. */
     DS,
     /** Battery level, to {@code battery_level}. */
-    BATTERY;
+    BATTERY,
+    /** Wheel odometry (each wheel's travel since the previous reading), to {@code odometry}. */
+    ODOMETRY;
 
     /**
      * The sensor a request names, exactly (upper case, no padding).

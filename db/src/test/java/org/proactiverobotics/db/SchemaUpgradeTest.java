@@ -77,6 +77,21 @@ class SchemaUpgradeTest {
         }
     }
 
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void aDatabaseMadeBeforeOdometryGetsTheTableAndItsTimeIndexItsRowsUntouched(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            db.execute("DROP TABLE odometry");
+            db.execute("INSERT INTO gps_stored_values (robot_id, sim_time_ms, x_m, y_m) VALUES (1, 32, 0.5, 1.5)");
+            Schema.apply(db.dataSource());
+            Schema.apply(db.dataSource()); // and again: harmless
+            assertThat(indexes(db, "odometry")).contains("idx_odometry_time");
+            db.execute("INSERT INTO odometry (robot_id, sim_time_ms, left_m, right_m) VALUES (1, 64, 0.016, -0.016)");
+            assertThat(db.count("odometry")).isOne();
+            assertThat(db.count("gps_stored_values")).isOne();
+        }
+    }
+
     private static java.util.Set<String> indexes(TestDatabase db, String table) throws Exception {
         java.util.Set<String> names = new java.util.TreeSet<>();
         try (Connection c = db.dataSource().getConnection()) {

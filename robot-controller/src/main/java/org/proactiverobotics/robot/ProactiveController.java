@@ -15,6 +15,7 @@ import org.proactiverobotics.robot.link.DistanceReading;
 import org.proactiverobotics.robot.link.GpsReading;
 import org.proactiverobotics.robot.link.IuReading;
 import org.proactiverobotics.robot.link.JdbcRobotLink;
+import org.proactiverobotics.robot.link.OdometryReading;
 import org.proactiverobotics.robot.link.RobotLink;
 import org.proactiverobotics.robot.link.RobotPool;
 import org.proactiverobotics.robot.link.SensorAnswer;
@@ -47,6 +48,7 @@ public class ProactiveController extends RobotSuperclass {
     /** A RECHARGE refused away from the station is said at most once per this much simulated time, ms. */
     static final long REFUSAL_WARN_INTERVAL_MS = 10_000;
     private static final long NEVER = Long.MIN_VALUE;
+    private static final String KNOWN_SENSORS = String.join(", ", Arrays.stream(Sensor.values()).map(Enum::name).toList());
 
     private final int robotId;
     private final Watchdog watchdog;
@@ -73,6 +75,9 @@ public class ProactiveController extends RobotSuperclass {
     private boolean checkpointUnreachable;
     private boolean noFixLogged;
     private Consumer<CommandRecord> commandListener = record -> { };
+    /** Each wheel's travel since the start as of the last odometry reading written, metres: where the next one counts from. */
+    private double reportedLeftM;
+    private double reportedRightM;
 
     /**
      * A controller over a link someone else owns (the app's pool, an in-process link...).
@@ -180,6 +185,7 @@ public class ProactiveController extends RobotSuperclass {
         boolean iu = false;
         boolean ds = false;
         boolean battery = false;
+        boolean odometry = false;
         long[] ids = new long[pending.size()];
         int answered = 0;
         for (SensorRequest r : pending) {
@@ -193,6 +199,7 @@ public class ProactiveController extends RobotSuperclass {
                 case IU -> iu = true;
                 case DS -> ds = true;
                 case BATTERY -> battery = true;
+                case ODOMETRY -> odometry = true;
                 default -> throw new AssertionError(sensor.get());
             }
             ids[answered++] = r.id();
@@ -200,8 +207,10 @@ public class ProactiveController extends RobotSuperclass {
         if (answered == 0) {
             return;
         }
+        double[] travel = odometry ? robot.odometer().getTravelM() : null;
         SensorAnswer answer = new SensorAnswer(now, gps ? readGps() : null, iu ? readIu() : null,
                 ds ? readDistances() : List.of(), battery ? readBattery() : null,
+                odometry ? new OdometryReading(travel[0] - reportedLeftM, travel[1] - reportedRightM) : null,
                 answered == ids.length ? ids : Arrays.copyOf(ids, answered));
         int readings = answer.readingCount();
         Boolean ok = call("writing " + readings + " reading(s)", readings, l -> {
@@ -211,6 +220,10 @@ public class ProactiveController extends RobotSuperclass {
         if (ok != null) {
             stats.requestsAnswered += answered;
             stats.readingsWritten += readings;
+            if (travel != null) { // a failed write leaves its travel to the next reading
+                reportedLeftM = travel[0];
+                reportedRightM = travel[1];
+            }
         }
     }
 
@@ -360,8 +373,8 @@ public class ProactiveController extends RobotSuperclass {
             stats.unknownRequests++;
         }
         if (unknownSensorsLogged.add(String.valueOf(r.sensor()))) {
-            LOG.warn("robot {}: request id {} asks for unknown sensor '{}'; left unanswered (known: GPS, IU, DS, BATTERY)",
-                    robotId, r.id(), r.sensor());
+            LOG.warn("robot {}: request id {} asks for unknown sensor '{}'; left unanswered (known: {})",
+                    robotId, r.id(), r.sensor(), KNOWN_SENSORS);
         }
     }
 

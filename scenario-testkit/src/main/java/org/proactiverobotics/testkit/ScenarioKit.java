@@ -238,7 +238,7 @@ public final class ScenarioKit implements AutoCloseable {
 
     /**
      * @return the sensors of the requests the engine wrote that the robot has not answered yet,
-     *         oldest first ({@code GPS}, {@code IU}, {@code DS}, {@code BATTERY})
+     *         oldest first ({@code GPS}, {@code IU}, {@code DS}, {@code BATTERY}, {@code ODOMETRY})
      */
     public List<String> requestedSensors() {
         return db.query("SELECT sensor FROM sensor_requests WHERE robot_id = ? AND answered_sim_time_ms IS NULL ORDER BY id",

@@ -32,6 +32,7 @@ public final class ScriptedRobot {
     private double[] distances;
     private Double batteryPct;
     private boolean charging;
+    private double[] wheelTravel;
 
     ScriptedRobot(int robotId, KitDatabase db) {
         this.robotId = robotId;
@@ -105,6 +106,21 @@ public final class ScriptedRobot {
     }
 
     /**
+     * The wheel odometry reading: each wheel's travel since the previous odometry reading. Every
+     * step writes this same travel until it is given another (a robot whose wheels keep their
+     * speeds); set it to 0, 0 for a robot standing still.
+     *
+     * @param leftM  the left wheel's travel since the previous reading, metres, positive forwards
+     * @param rightM the right wheel's travel since the previous reading, metres, positive forwards
+     * @return this robot; the odometry publishes again if it was silent
+     */
+    public ScriptedRobot odometry(double leftM, double rightM) {
+        wheelTravel = new double[] {leftM, rightM};
+        silent.remove(Sensor.ODOMETRY);
+        return this;
+    }
+
+    /**
      * Stops these sensors publishing (a broken wire, a dead driver): from the next step their
      * newest reading grows old and their requests stay pending. Giving a sensor a new reading
      * makes it publish again.
@@ -132,6 +148,7 @@ public final class ScriptedRobot {
             case IU -> yawRad != null;
             case DS -> distances != null;
             case BATTERY -> batteryPct != null;
+            case ODOMETRY -> wheelTravel != null;
         };
     }
 
@@ -155,6 +172,10 @@ public final class ScriptedRobot {
         if (publishes(Sensor.BATTERY)) {
             db.update("INSERT INTO battery_level (robot_id, sim_time_ms, level_pct, charging) VALUES (?, ?, ?, ?)",
                     robotId, simTimeMs, batteryPct, charging);
+        }
+        if (publishes(Sensor.ODOMETRY)) {
+            db.update("INSERT INTO odometry (robot_id, sim_time_ms, left_m, right_m) VALUES (?, ?, ?, ?)",
+                    robotId, simTimeMs, wheelTravel[0], wheelTravel[1]);
         }
         for (Sensor s : Sensor.values()) {
             if (publishes(s)) {

@@ -8,6 +8,7 @@ import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.WheelOdometry;
 
 /** The readings with a fault to inject: while on, reading the newest scan throws. */
 final class ScanFault implements SensorReadings {
@@ -51,6 +52,11 @@ final class ScanFault implements SensorReadings {
     @Override
     public Optional<BatteryState> newestBattery() {
         return readings.newestBattery();
+    }
+
+    @Override
+    public Optional<WheelOdometry> newestOdometry() {
+        return readings.newestOdometry();
     }
 
     @Override

@@ -88,13 +88,13 @@ class ScenarioKitTest {
     @Test
     void aSilentSensorLeavesTheDataAcquisitionsRequestPending() {
         try (ScenarioKit kit = ScenarioKit.builder().scenario(new SpeedGovernorScenario()).withDataAcquisition().start()) {
-            kit.robot().gps(0, 0).headingDeg(0).scan(CLEAR).battery(90);
+            kit.robot().gps(0, 0).headingDeg(0).scan(CLEAR).battery(90).odometry(0, 0);
             kit.step();
-            assertThat(kit.requestedSensors()).containsExactly("GPS", "DS", "IU");
+            assertThat(kit.requestedSensors()).containsExactly("GPS", "DS", "IU", "ODOMETRY");
             kit.robot().silent(Sensor.DS);
             kit.step(3);
             assertThat(kit.requestedSensors()).as("answered every step but the scan's, asked once")
-                    .containsExactly("DS", "GPS", "IU");
+                    .containsExactly("DS", "GPS", "IU", "ODOMETRY");
         }
     }
 

@@ -16,6 +16,7 @@ public final class SimRobot {
     private final InertialUnit inertialUnit;
     private final List<DistanceSensor> distanceSensors;
     private final Battery battery;
+    private final WheelOdometer odometer;
     private double leftMps;
     private double rightMps;
 
@@ -30,6 +31,7 @@ public final class SimRobot {
         }
         this.distanceSensors = List.of(sensors);
         this.battery = new Battery(sim);
+        this.odometer = new WheelOdometer(sim);
     }
 
     /** @return the default distance sensors' angles relative to the heading, degrees, by index (a copy) */
@@ -55,6 +57,11 @@ public final class SimRobot {
     /** @return the battery */
     public Battery battery() {
         return battery;
+    }
+
+    /** @return the wheel encoders */
+    public WheelOdometer odometer() {
+        return odometer;
     }
 
     /**

@@ -56,6 +56,9 @@ public final class Simulation {
     private final List<Object> engaged = new ArrayList<>();
     private long steps;
     private long sampledStep = -1;
+    /** Each wheel's travel since the start, metres: the applied wheel speeds times the steps' length. */
+    private double leftTravelM;
+    private double rightTravelM;
     private double level;
     private boolean charging;
     private boolean atStation;
@@ -183,6 +186,8 @@ public final class Simulation {
             double heading = t.getRotationAngle();
             robotBody.setLinearVelocity(v * Math.cos(heading), v * Math.sin(heading));
             robotBody.setAngularVelocity(w);
+            leftTravelM += robot.leftSpeedMps() * dt;
+            rightTravelM += robot.rightSpeedMps() * dt;
         } else {
             robotBody.setLinearVelocity(0.0, 0.0);
             robotBody.setAngularVelocity(0.0);
@@ -358,6 +363,10 @@ public final class Simulation {
             yaw += noise.yawSigmaRad() * SensorNoise.gaussian(spec.seed(), steps, 2);
         }
         return normalizeAngle(yaw);
+    }
+
+    double[] wheelTravelM() {
+        return new double[] {leftTravelM, rightTravelM};
     }
 
     double distanceValue(int index) {

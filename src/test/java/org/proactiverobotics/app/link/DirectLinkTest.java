@@ -22,6 +22,7 @@ import org.proactiverobotics.robot.link.GpsReading;
 import org.proactiverobotics.robot.link.IuReading;
 import org.proactiverobotics.robot.link.JdbcRobotLink;
 import org.proactiverobotics.robot.link.MissionSpec;
+import org.proactiverobotics.robot.link.OdometryReading;
 import org.proactiverobotics.robot.link.RetentionPolicy;
 import org.proactiverobotics.robot.link.RobotLink;
 import org.proactiverobotics.robot.link.SensorAnswer;
@@ -53,6 +54,10 @@ class DirectLinkTest {
                 engine.requests().request(Sensor.DS, step);
                 engine.requests().request(Sensor.IU, step);
             }
+            if (step % 3 != 1) {
+                engine.requests().request(Sensor.ODOMETRY, step);
+            }
+            seen.add(engine.requests().pending(Sensor.ODOMETRY));
             seen.add(engine.requests().pending(Sensor.GPS));
             seen.add(engine.requests().pending(Sensor.BATTERY));
             List<SensorRequest> pending = robot.pendingRequests(1);
@@ -60,10 +65,12 @@ class DirectLinkTest {
             seen.add(pending.stream().mapToLong(SensorRequest::id).boxed().toList());
             long[] ids = pending.stream().mapToLong(SensorRequest::id).toArray();
             boolean ds = pending.stream().anyMatch(r -> r.sensor().equals("DS"));
+            boolean odometry = pending.stream().anyMatch(r -> r.sensor().equals("ODOMETRY"));
             robot.answer(1, new SensorAnswer(t, new GpsReading(step * 0.1, -step * 0.2),
                     ds ? new IuReading(0, 0, step * 0.01) : null,
                     ds ? List.of(new DistanceReading(1, 0.5, 0.3 + step, 1.0), new DistanceReading(0, -0.5, 1.0, 1.0))
-                            : List.of(), step == 5 ? new BatteryReading(90, true) : null, ids));
+                            : List.of(), step == 5 ? new BatteryReading(90, true) : null,
+                    odometry ? new OdometryReading(step * 0.01, -step * 0.02) : null, ids));
             robot.answer(1, new SensorAnswer(t + 1, null, null, List.of(), null, ids)); // already answered: nothing
             seen.add(engine.requests().pending(Sensor.GPS));
             seen.add(engine.readings().newestGps());
@@ -71,6 +78,7 @@ class DirectLinkTest {
             seen.add(engine.readings().newestScan().map(s -> List.of(s.simTimeMs(), List.of(s.anglesRad()[0], s.anglesRad()[1]),
                     List.of(s.distancesM()[0], s.distancesM()[1]), s.rangeM())));
             seen.add(engine.readings().newestBattery());
+            seen.add(engine.readings().newestOdometry());
             for (Sensor s : Sensor.values()) {
                 seen.add(engine.readings().newestSimTimeMs(s));
             }
@@ -91,6 +99,7 @@ class DirectLinkTest {
         seen.add(robot.prune(1, new RetentionPolicy(2, 1)));
         seen.add(engine.pruneHistory().applyAsInt(3));
         seen.add(engine.readings().newestGps());
+        seen.add(engine.readings().newestOdometry());
         seen.add(robot.newestCommand(1).map(CommandRecord::command));
         seen.add(robot.prune(1, RetentionPolicy.KEEP_ALL));
         return seen;

@@ -156,9 +156,10 @@ public final class RobotProcess {
         long steps = times == null ? 0 : times.steps();
         MissionReport.Timing timing = times == null ? null
                 : MissionReport.Timing.rounded(times.physicsMs(), times.senseMs() + times.actMs(), times.waitMs());
-        // strategy and ruleFailures left out: the robot's user may read neither the strategy nor rule_failures table
+        // strategy and ruleFailures left out: the robot's user may read neither the strategy nor rule_failures table;
+        // poseError too: the engine's belief stays in the engine process, no table holds it
         return MissionReport.of(sim, outcome, null, MissionReport.databaseKind(options.db().url()), wallS, steps,
-                engineIterations, wins, null, timing);
+                engineIterations, wins, null, null, timing);
     }
 
     /** The lockstep gate plus one INFO line every N steps and the heartbeat. */

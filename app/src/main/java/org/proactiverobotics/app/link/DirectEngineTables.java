@@ -17,6 +17,7 @@ import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.engine.tables.StrategyTable;
+import org.proactiverobotics.engine.tables.WheelOdometry;
 
 /**
  * The engine side of a {@link DirectLink} for one robot: the same table interfaces as
@@ -52,12 +53,18 @@ public final class DirectEngineTables
     }
 
     @Override
+    public Optional<WheelOdometry> newestOdometry() {
+        return Optional.ofNullable(rows.newestOdometry());
+    }
+
+    @Override
     public long newestSimTimeMs(Sensor sensor) {
         return switch (sensor) {
             case GPS -> rows.newestGpsMs();
             case IU -> rows.newestIuMs();
             case DS -> rows.newestScanMs();
             case BATTERY -> rows.newestBatteryMs();
+            case ODOMETRY -> rows.newestOdometryMs();
         };
     }
 

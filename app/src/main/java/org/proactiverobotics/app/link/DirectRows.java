@@ -14,6 +14,7 @@ import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.engine.tables.StrategyTable;
+import org.proactiverobotics.engine.tables.WheelOdometry;
 import org.proactiverobotics.robot.link.BatteryReading;
 import org.proactiverobotics.robot.link.CommandRecord;
 import org.proactiverobotics.robot.link.DistanceReading;
@@ -48,6 +49,7 @@ final class DirectRows {
     private final ArrayDeque<Heading> iu = new ArrayDeque<>();
     private final ArrayDeque<DistanceScan> scans = new ArrayDeque<>();
     private final ArrayDeque<BatteryState> battery = new ArrayDeque<>();
+    private final ArrayDeque<WheelOdometry> odometry = new ArrayDeque<>();
     private final ArrayList<Request> pending = new ArrayList<>();
     private final ArrayDeque<Request> answered = new ArrayDeque<>();
     private final ArrayDeque<CommandRecord> commands = new ArrayDeque<>();
@@ -86,6 +88,9 @@ final class DirectRows {
         }
         if (a.battery() != null) {
             battery.addLast(new BatteryState(t, a.battery().levelPct(), a.battery().charging()));
+        }
+        if (a.odometry() != null) {
+            odometry.addLast(new WheelOdometry(t, a.odometry().leftM(), a.odometry().rightM()));
         }
         for (long id : a.requestIds()) {
             for (Iterator<Request> it = pending.iterator(); it.hasNext(); ) {
@@ -147,7 +152,7 @@ final class DirectRows {
 
     /** The robot's retention: readings beyond the newest n; rows deleted (answered requests are the engine's to prune, as over JDBC). */
     synchronized int pruneReadings(int keep) {
-        int deleted = trim(gps, keep) + trim(iu, keep) + trim(battery, keep);
+        int deleted = trim(gps, keep) + trim(iu, keep) + trim(battery, keep) + trim(odometry, keep);
         while (scans.size() > keep) {
             deleted += scans.pollFirst().anglesRad().length; // one row per sensor, as in the table
         }
@@ -172,6 +177,10 @@ final class DirectRows {
         return battery.peekLast();
     }
 
+    synchronized WheelOdometry newestOdometry() {
+        return odometry.peekLast();
+    }
+
     synchronized long newestGpsMs() {
         return gps.isEmpty() ? -1 : gps.peekLast().simTimeMs();
     }
@@ -186,6 +195,10 @@ final class DirectRows {
 
     synchronized long newestBatteryMs() {
         return battery.isEmpty() ? -1 : battery.peekLast().simTimeMs();
+    }
+
+    synchronized long newestOdometryMs() {
+        return odometry.isEmpty() ? -1 : odometry.peekLast().simTimeMs();
     }
 
     synchronized boolean pending(String sensor) {

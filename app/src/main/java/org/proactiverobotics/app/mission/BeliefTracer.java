@@ -16,7 +16,8 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * over as deltas ({@link #take}): the pose when it moved by a millimetre or a milliradian, the route
  * of the scenario whose command won when its waypoints changed, the map's cells whose state changed (kept in a mirror of the map's
  * states, one byte per cell), the veto's reason at an iteration ObstacleAvoidance won, and a
- * checkpoint declared unreachable (reason and event). Engine thread only.
+ * checkpoint declared unreachable (reason and event). It also keeps the newest pose the engine
+ * had, for the pose error ({@link #hasPose}). Engine thread only.
  */
 final class BeliefTracer implements BeliefObserver {
 
@@ -24,6 +25,8 @@ final class BeliefTracer implements BeliefObserver {
 
     // the newest of the iteration, not yet written
     private boolean poseSaid;
+    /** Whether any scenario has told of a pose yet: from then on {@link #pose} is the engine's newest. */
+    private boolean hasPose;
     private final double[] pose = new double[3];
     /** The newest route each scenario told of, {x0, y0, x1, y1, ...}: the winner's is the one the robot follows. */
     private final Map<String, double[]> routes = new HashMap<>();
@@ -43,6 +46,7 @@ final class BeliefTracer implements BeliefObserver {
     @Override
     public void pose(long iteration, double xM, double yM, double headingRad) {
         poseSaid = true;
+        hasPose = true;
         pose[0] = xM;
         pose[1] = yM;
         pose[2] = headingRad;
@@ -84,6 +88,26 @@ final class BeliefTracer implements BeliefObserver {
     public void checkpointUnreachable(long iteration, int seq, String reason) {
         unreachableIndex = seq;
         unreachableReason = reason;
+    }
+
+    /** @return whether the engine has had a pose yet (it has none before its first GPS and heading readings) */
+    boolean hasPose() {
+        return hasPose;
+    }
+
+    /** @return the newest pose's x the engine had, metres (meaningful once {@link #hasPose}) */
+    double poseXM() {
+        return pose[0];
+    }
+
+    /** @return the newest pose's y, metres */
+    double poseYM() {
+        return pose[1];
+    }
+
+    /** @return the newest pose's heading, radians */
+    double poseHeadingRad() {
+        return pose[2];
     }
 
     /** Sorts as (iy, ix): the row in the high half, the column with its sign bit flipped so that it sorts as signed. */

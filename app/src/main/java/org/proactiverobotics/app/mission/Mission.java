@@ -55,6 +55,7 @@ public final class Mission {
     private UnaryOperator<EngineTables> engineTables = UnaryOperator.identity();
     private StepTracer tracer;
     private final BeliefTracer belief = new BeliefTracer();
+    private final PoseErrorMeter poseError = new PoseErrorMeter();
     private SeenReadings seen;
     private String drivingScenario = "none";
     private Map<String, Integer> slots = Map.of();
@@ -197,6 +198,10 @@ public final class Mission {
             IterationSummary summary = engine.iterate();
             failures += summary.rulesFailed();
             long t2 = System.nanoTime();
+            if (belief.hasPose()) { // the world has not moved since the robot sensed: truth is the iteration's
+                poseError.add(belief.poseXM(), belief.poseYM(), belief.poseHeadingRad(), truth.x(), truth.y(),
+                        truth.headingRad());
+            }
             controller.act();
             tracer.beforePhysics();
             long t3 = System.nanoTime();
@@ -222,8 +227,8 @@ public final class Mission {
         String database = options.link() == MissionOptions.Link.DIRECT ? "direct"
                 : MissionReport.databaseKind(options.jdbcUrl());
         return MissionReport.of(sim, outcome, options.strategy().name(), database, wallS, steps, engine.engine().iteration(),
-                commandWins, failures, MissionReport.Timing.rounded(physicsNs / 1e6 / steps, robotNs / 1e6 / steps,
-                        engineNs / 1e6 / steps));
+                commandWins, failures, poseError.result(), MissionReport.Timing.rounded(physicsNs / 1e6 / steps,
+                        robotNs / 1e6 / steps, engineNs / 1e6 / steps));
     }
 
     /** Every decision goes to trace.jsonl (the command it leads to is sent in the next iteration). */

@@ -32,6 +32,9 @@ import org.proactiverobotics.sim2d.Simulation;
  * @param commandWins        commands sent, by the scenario whose suggestion won
  * @param ruleFailures       rule parts that threw; null, and left out of report.json, in the robot process's
  *                           report: its database user may not read the engine's rule_failures table
+ * @param poseError          how far the engine's believed pose was from the ground truth; null, and left out of
+ *                           report.json, when the engine never had a pose, and in the robot process's report: that
+ *                           process cannot see what the engine believed
  * @param timing             mean wall time per control step, milliseconds, by phase
  */
 public record MissionReport(
@@ -55,6 +58,7 @@ public record MissionReport(
         int recharges,
         Map<String, Long> commandWins,
         Long ruleFailures,
+        PoseError poseError,
         Timing timing) {
 
     /**
@@ -69,19 +73,21 @@ public record MissionReport(
      * @param engineIterations engine iterations
      * @param commandWins      commands the robot got, by scenario
      * @param ruleFailures     rule parts that threw, or null when this process cannot see them
+     * @param poseError        the engine's pose error, or null when it had no pose or this process cannot see it
      * @param timing           mean wall time per control step by phase, or null
      * @return the report
      */
     public static MissionReport of(Simulation sim, Outcome outcome, String strategy, String database, double wallTimeS,
                                    long controlSteps, long engineIterations, Map<String, Long> commandWins,
-                                   Long ruleFailures, Timing timing) {
+                                   Long ruleFailures, PoseError poseError, Timing timing) {
         GroundTruth truth = sim.groundTruth();
         double simS = sim.simTimeMs() / 1000.0;
         return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, strategy, database,
                 truth.checkpointsReached(), truth.checkpointsTotal(), simS, round(wallTimeS, 3),
                 round(simS / Math.max(wallTimeS, 1e-9), 1), controlSteps, engineIterations, round(truth.distanceM(), 3),
                 truth.collisions(), round(truth.minClearanceM(), 4), round(truth.minBatteryPct(), 2),
-                round(truth.batteryPct(), 2), truth.recharges(), Collections.unmodifiableMap(new TreeMap<>(commandWins)), ruleFailures, timing);
+                round(truth.batteryPct(), 2), truth.recharges(), Collections.unmodifiableMap(new TreeMap<>(commandWins)), ruleFailures, poseError,
+                timing);
     }
 
     /** @return the database kind a JDBC URL names: "h2", "mariadb", "mysql", ... */

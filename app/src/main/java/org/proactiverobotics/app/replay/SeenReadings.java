@@ -9,6 +9,7 @@ import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.WheelOdometry;
 
 /**
  * The engine's sensor readings, passed through unchanged, remembering the newest of each the
@@ -64,6 +65,12 @@ public final class SeenReadings implements SensorReadings {
         Optional<BatteryState> r = readings.newestBattery();
         r.ifPresent(v -> battery = v);
         return r;
+    }
+
+    /** Passed through, not remembered: the trace has no odometry (yet). */
+    @Override
+    public Optional<WheelOdometry> newestOdometry() {
+        return readings.newestOdometry();
     }
 
     @Override

@@ -1,6 +1,7 @@
 package org.proactiverobotics.app.sweep;
 
 import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.PoseError;
 
 /**
  * One row of results.csv: what a mission of the sweep ended with, from its report; or, for a
@@ -18,10 +19,12 @@ import org.proactiverobotics.app.mission.MissionReport;
  * @param minBattery         lowest battery, percent
  * @param recharges          charging sessions
  * @param reason             why the mission failed, in a few words; empty when it was accomplished
+ * @param poseError          report.json's pose error; null (empty cells) when the engine never had a pose, or for
+ *                           an {@value #ERROR}
  */
 public record MissionResult(SweepMission mission, String outcome, boolean success, int checkpointsReached,
                             int checkpointsTotal, double simTimeS, double wallTimeS, double distanceM, int collisions,
-                            double minBattery, int recharges, String reason) {
+                            double minBattery, int recharges, String reason, PoseError poseError) {
 
     /** The outcome of a mission that threw before its end. */
     public static final String ERROR = "ERROR";
@@ -41,7 +44,7 @@ public record MissionResult(SweepMission mission, String outcome, boolean succes
         };
         return new MissionResult(mission, report.outcome().name(), report.success(), report.checkpointsReached(),
                 report.checkpointsTotal(), report.simTimeS(), report.wallTimeS(), report.distanceM(), report.collisions(),
-                report.minBattery(), report.recharges(), reason);
+                report.minBattery(), report.recharges(), reason, report.poseError());
     }
 
     /**
@@ -57,6 +60,6 @@ public record MissionResult(SweepMission mission, String outcome, boolean succes
         }
         String message = cause.getMessage() == null ? "" : ": " + cause.getMessage();
         return new MissionResult(mission, ERROR, false, 0, mission.world().checkpoints().size(), 0, wallTimeS, 0, 0, 0, 0,
-                cause.getClass().getSimpleName() + message);
+                cause.getClass().getSimpleName() + message, null);
     }
 }

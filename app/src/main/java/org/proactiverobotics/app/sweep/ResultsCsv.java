@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.apache.commons.csv.CSVFormat;
 import org.apache.commons.csv.CSVPrinter;
+import org.proactiverobotics.app.mission.PoseError;
 
 /**
  * results.csv: one row per mission, written and flushed as each mission finishes (from any
@@ -17,10 +18,11 @@ import org.apache.commons.csv.CSVPrinter;
  */
 public final class ResultsCsv implements Closeable {
 
-    /** The columns, in order. */
+    /** The columns, in order (the pose error's last, added after the others: a reader by position keeps working). */
     public static final List<String> COLUMNS = List.of("world", "strategy", "noise", "seed", "outcome", "success",
             "checkpointsReached", "checkpointsTotal", "simTimeS", "wallTimeS", "distanceM", "collisions", "minBattery",
-            "recharges", "worldKind", "reason", "mission");
+            "recharges", "worldKind", "reason", "mission", "poseErrorMeanM", "poseErrorMaxM", "headingErrorMeanRad",
+            "headingErrorMaxRad");
 
     /** The file's format (the header aside): RFC 4180 with a bare newline between rows. */
     static final CSVFormat FORMAT = CSVFormat.DEFAULT.builder().setRecordSeparator("\n").get();
@@ -47,10 +49,13 @@ public final class ResultsCsv implements Closeable {
      */
     public synchronized void append(MissionResult r) {
         SweepMission m = r.mission();
+        PoseError pose = r.poseError(); // null: empty cells
         try {
             printer.printRecord(m.world().name(), m.strategy().name(), m.noise().label(), m.seed(), r.outcome(), r.success(),
                     r.checkpointsReached(), r.checkpointsTotal(), r.simTimeS(), r.wallTimeS(), r.distanceM(), r.collisions(),
-                    r.minBattery(), r.recharges(), m.worldKind(), r.reason(), m.folder());
+                    r.minBattery(), r.recharges(), m.worldKind(), r.reason(), m.folder(),
+                    pose == null ? null : pose.meanM(), pose == null ? null : pose.maxM(),
+                    pose == null ? null : pose.meanHeadingRad(), pose == null ? null : pose.maxHeadingRad());
             printer.flush();
         } catch (IOException e) {
             throw new UncheckedIOException(e);

@@ -29,7 +29,7 @@ final class IterationSnapshot {
     // (robot_id, sim_time_ms, id) index, read backwards): newest by simulated time, not by id.
     // Wrapped in a plain SELECT because H2 caches a prepared SELECT but re-parses a bare UNION at
     // every prepare (the parse was a quarter of an H2 mission's time, JFR). %d is the row's kind:
-    // the part (1-9) plus ten times the robot's place in a query for several robots.
+    // the part (1-10) plus KINDS_PER_ROBOT times the robot's place in a query for several robots.
     private static final String[] PARTS = {
         "(SELECT %d AS k, sim_time_ms AS n1, 0 AS n2, 0 AS n3, x_m AS d1, y_m AS d2, CAST(0 AS DOUBLE) AS d3,"
             + " CAST(0 AS DOUBLE) AS d4, '' AS s1, '' AS s2 FROM gps_stored_values WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1)",
@@ -47,8 +47,12 @@ final class IterationSnapshot {
         "(SELECT %d, 0, 0, 0, x_m, y_m, radius_m, CAST(0 AS DOUBLE), '', '' FROM recharge_station WHERE robot_id = ?)",
         "(SELECT %d, 0, 0, 0, level_pct, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', '' FROM battery_recharged WHERE robot_id = ?)",
         "(SELECT %d, slot, priority, timeout_ms, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), scenario, strategy_name FROM strategy"
-            + " WHERE robot_id = ?)"};
-    private static final int ROBOT_ID_PARAMETERS = 10;
+            + " WHERE robot_id = ?)",
+        "(SELECT %d, sim_time_ms, 0, 0, left_m, right_m, CAST(0 AS DOUBLE), CAST(0 AS DOUBLE), '', '' FROM odometry WHERE robot_id = ?"
+            + " ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1)"};
+    private static final int ROBOT_ID_PARAMETERS = 11;
+    /** The kinds one robot's rows take (parts 1 to {@code PARTS.length}), so that a kind names its robot too. */
+    private static final int KINDS_PER_ROBOT = 20;
     /** The most robots read in one query (a longer text costs the server more to parse than a round trip saves). */
     static final int MAX_ROBOTS_PER_QUERY = 16;
     /** The query for one robot, then for two, ..., {@value #MAX_ROBOTS_PER_QUERY}: index k - 1. */
@@ -62,7 +66,7 @@ final class IterationSnapshot {
                     if (r > 0 || part > 0) {
                         sql.append(" UNION ALL ");
                     }
-                    sql.append(String.format(Locale.ROOT, PARTS[part], 10 * r + part + 1));
+                    sql.append(String.format(Locale.ROOT, PARTS[part], KINDS_PER_ROBOT * r + part + 1));
                 }
             }
             QUERIES[robots - 1] = sql.append(") snapshot").toString();
@@ -75,6 +79,7 @@ final class IterationSnapshot {
     private Heading heading;
     private BatteryState battery;
     private DistanceScan scan;
+    private WheelOdometry odometry;
     /** Sensors with a request not answered yet (exact names only: see JdbcRobotTables#pending). */
     private final Set<Sensor> pending = EnumSet.noneOf(Sensor.class);
     private List<Checkpoint> checkpoints = new ArrayList<>();
@@ -133,7 +138,7 @@ final class IterationSnapshot {
             try (ResultSet rs = ps.executeQuery()) {
                 while (rs.next()) {
                     int kind = rs.getInt(1);
-                    into[from + kind / 10].row(kind % 10, rs);
+                    into[from + kind / KINDS_PER_ROBOT].row(kind % KINDS_PER_ROBOT, rs);
                 }
             }
         }
@@ -165,6 +170,7 @@ final class IterationSnapshot {
             case 8 -> rechargeLevelPct = rs.getDouble(5);
             case 9 -> strategy.add(new StrategyTable.Entry(rs.getInt(2), rs.getString(9), rs.getInt(3),
                     rs.getString(10), rs.getLong(4)));
+            case 10 -> odometry = new WheelOdometry(rs.getLong(2), rs.getDouble(5), rs.getDouble(6));
             default -> throw new IllegalStateException("unknown snapshot row kind " + rs.getInt(1));
         }
     }
@@ -199,6 +205,10 @@ final class IterationSnapshot {
         return Optional.ofNullable(battery);
     }
 
+    Optional<WheelOdometry> odometry() {
+        return Optional.ofNullable(odometry);
+    }
+
     Optional<DistanceScan> scan() {
         return scan == null ? Optional.empty() : Optional.of(new DistanceScan(scan.simTimeMs(),
                 Arrays.copyOf(scan.anglesRad(), scan.anglesRad().length),
@@ -211,6 +221,7 @@ final class IterationSnapshot {
             case IU -> heading == null ? -1 : heading.simTimeMs();
             case DS -> scan == null ? -1 : scan.simTimeMs();
             case BATTERY -> battery == null ? -1 : battery.simTimeMs();
+            case ODOMETRY -> odometry == null ? -1 : odometry.simTimeMs();
         };
     }
 

@@ -238,6 +238,17 @@ public final class JdbcRobotTables
     }
 
     @Override
+    public Optional<WheelOdometry> newestOdometry() {
+        IterationSnapshot snap = snapshot();
+        if (snap != null) {
+            return snap.odometry();
+        }
+        return queryOne("newest odometry reading",
+                "SELECT sim_time_ms, left_m, right_m FROM odometry WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1",
+                rs -> new WheelOdometry(rs.getLong(1), rs.getDouble(2), rs.getDouble(3)));
+    }
+
+    @Override
     public long newestSimTimeMs(Sensor sensor) {
         IterationSnapshot snap = snapshot();
         if (snap != null) {
@@ -248,6 +259,7 @@ public final class JdbcRobotTables
             case IU -> "SELECT sim_time_ms FROM iudata WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1";
             case DS -> "SELECT sim_time_ms FROM distance_sensor_data WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC LIMIT 1";
             case BATTERY -> "SELECT sim_time_ms FROM battery_level WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1";
+            case ODOMETRY -> "SELECT sim_time_ms FROM odometry WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1";
         };
         return queryOne("newest " + sensor + " time", sql, rs -> rs.getLong(1)).orElse(-1L);
     }

@@ -13,7 +13,9 @@ public enum Sensor {
     /** Distance sensors: {@code distance_sensor_data}. */
     DS,
     /** Battery: {@code battery_level}. */
-    BATTERY;
+    BATTERY,
+    /** Wheel odometry: {@code odometry}. */
+    ODOMETRY;
 
     private final org.proactiverobotics.protocol.Sensor word = org.proactiverobotics.protocol.Sensor.valueOf(name());
 

@@ -17,6 +17,9 @@ public interface SensorReadings {
     /** @return the newest battery reading, if any */
     Optional<BatteryState> newestBattery();
 
+    /** @return the newest wheel odometry reading (the travel since the one before it), if any */
+    Optional<WheelOdometry> newestOdometry();
+
     /** @return the simulated time of the newest reading of a sensor, or -1 when there is none */
     long newestSimTimeMs(Sensor sensor);
 }

@@ -198,11 +198,11 @@ class RobotEngineTest {
                 List<String> reads = sent.stream().filter(x -> x.contains("FROM gps_stored_values")).toList();
                 List<String> commits = sent.stream().filter(x -> x.endsWith("COMMIT") || x.equals("commit")).toList();
                 if (kind == DatabaseKind.H2) {
-                    assertThat(reads).as("H2: each reads its own").noneMatch(x -> x.contains("SELECT 11 AS k"));
+                    assertThat(reads).as("H2: each reads its own").noneMatch(x -> x.contains("SELECT 21 AS k")); // the second robot's first kind
                     assertThat(commits).as("H2: each commits its own").hasSize(3);
                 } else {
                     assertThat(reads).as("iteration %d: one read for the three robots", k).hasSize(1);
-                    assertThat(reads.get(0)).contains("SELECT 21 AS k");
+                    assertThat(reads.get(0)).contains("SELECT 41 AS k"); // the third robot's first kind
                     assertThat(commits).as("iteration %d: one commit for the three robots", k).hasSize(1);
                     assertThat(commits.get(0)).contains("robot_id, iteration, memory_json");
                 }

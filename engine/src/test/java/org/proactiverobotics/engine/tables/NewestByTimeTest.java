@@ -27,6 +27,8 @@ class NewestByTimeTest {
         db.execute("INSERT INTO iudata (id, robot_id, sim_time_ms, roll_rad, pitch_rad, yaw_rad) VALUES (29, 4, 64, 0, 0, 0.2)");
         db.execute("INSERT INTO battery_level (id, robot_id, sim_time_ms, level_pct, charging) VALUES (31, 4, 32, 90, FALSE)");
         db.execute("INSERT INTO battery_level (id, robot_id, sim_time_ms, level_pct, charging) VALUES (29, 4, 64, 80, TRUE)");
+        db.execute("INSERT INTO odometry (id, robot_id, sim_time_ms, left_m, right_m) VALUES (31, 4, 32, 0.01, 0.02)");
+        db.execute("INSERT INTO odometry (id, robot_id, sim_time_ms, left_m, right_m) VALUES (29, 4, 64, -0.03, 0.04)");
     }
 
     private static List<Object> newest(JdbcRobotTables tables) {
@@ -34,7 +36,8 @@ class NewestByTimeTest {
         seen.add(tables.newestGps().orElseThrow().xM());
         seen.add(tables.newestHeading().orElseThrow().yawRad());
         seen.add(tables.newestBattery().orElseThrow().levelPct());
-        for (Sensor sensor : List.of(Sensor.GPS, Sensor.IU, Sensor.BATTERY)) {
+        seen.add(tables.newestOdometry().orElseThrow());
+        for (Sensor sensor : List.of(Sensor.GPS, Sensor.IU, Sensor.BATTERY, Sensor.ODOMETRY)) {
             seen.add(tables.newestSimTimeMs(sensor));
         }
         return seen;
@@ -45,7 +48,7 @@ class NewestByTimeTest {
     void theNewestReadingIsTheLatestInSimulatedTimeOutsideAndInsideAnIteration(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind)) {
             writeInterleaved(db);
-            List<Object> expected = List.of(2.0, 0.2, 80.0, 64L, 64L, 64L);
+            List<Object> expected = List.of(2.0, 0.2, 80.0, new WheelOdometry(64, -0.03, 0.04), 64L, 64L, 64L, 64L);
             assertThat(newest(new JdbcRobotTables(db.dataSource(), ROBOT))).isEqualTo(expected);
 
             IterationTransaction tx = new IterationTransaction(db.dataSource());
@@ -54,6 +57,34 @@ class NewestByTimeTest {
             assertThat(newest(inIteration)).as("through the iteration's snapshot").isEqualTo(expected);
             assertThat(inIteration.snapshotLoads()).isEqualTo(1);
             tx.rollback();
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void snapshotsReadAheadGiveEachRobotItsOwnNewestOdometry(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            int robots = IterationSnapshot.MAX_ROBOTS_PER_QUERY + 2; // two queries
+            int[] ids = new int[robots];
+            for (int r = 0; r < robots; r++) {
+                ids[r] = 100 + r;
+                if (r % 5 != 4) { // every fifth robot has no odometry yet
+                    db.execute("INSERT INTO odometry (robot_id, sim_time_ms, left_m, right_m) VALUES (" + ids[r] + ", 64, "
+                            + r + ", " + (-r) + "), (" + ids[r] + ", 32, 99, 99)");
+                }
+            }
+            IterationSnapshot[] snapshots;
+            try (var c = db.dataSource().getConnection()) {
+                snapshots = IterationSnapshot.loadAll(c, ids);
+            }
+            for (int r = 0; r < robots; r++) {
+                if (r % 5 == 4) {
+                    assertThat(snapshots[r].odometry()).as("robot %d", ids[r]).isEmpty();
+                    assertThat(snapshots[r].newestSimTimeMs(Sensor.ODOMETRY)).isEqualTo(-1);
+                } else {
+                    assertThat(snapshots[r].odometry()).as("robot %d", ids[r]).contains(new WheelOdometry(64, r, -r));
+                }
+            }
         }
     }
 

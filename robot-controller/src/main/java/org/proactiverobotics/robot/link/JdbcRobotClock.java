@@ -26,7 +26,8 @@ public final class JdbcRobotClock implements RobotClock {
 
     private static final Logger LOG = LoggerFactory.getLogger(JdbcRobotClock.class);
 
-    private static final List<String> READING_TABLES = List.of("gps_stored_values", "iudata", "distance_sensor_data", "battery_level");
+    private static final List<String> READING_TABLES = List.of("gps_stored_values", "iudata", "distance_sensor_data", "battery_level",
+            "odometry");
 
     /** The engine's tick, the newest command and the pending requests, in one round trip. */
     private static final String TICK_WITH_READS = "(SELECT 1 AS k, run_id AS a, step AS b, iteration AS c, '' AS s1, '' AS s2"

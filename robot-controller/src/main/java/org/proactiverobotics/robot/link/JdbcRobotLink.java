@@ -40,6 +40,8 @@ public final class JdbcRobotLink implements RobotLink {
             "robot_id", "sim_time_ms", "sensor_index", "angle_rad", "distance_m", "range_m");
     private static final String INSERT_BATTERY =
             "INSERT INTO battery_level (robot_id, sim_time_ms, level_pct, charging) VALUES (?, ?, ?, ?)";
+    private static final String INSERT_ODOMETRY =
+            "INSERT INTO odometry (robot_id, sim_time_ms, left_m, right_m) VALUES (?, ?, ?, ?)";
     /** Marks the requests answered in one statement; {@link #markAnswered(int)} adds the ids' placeholders. */
     private static final String MARK_ANSWERED = "UPDATE sensor_requests SET answered_sim_time_ms = ? "
             + "WHERE robot_id = ? AND answered_sim_time_ms IS NULL AND id IN (";
@@ -265,6 +267,14 @@ public final class JdbcRobotLink implements RobotLink {
         if (answer.battery() != null) {
             writes.add(INSERT_BATTERY, 4, (ps, p) -> bindBattery(ps, p, robotId, t, answer.battery()));
         }
+        if (answer.odometry() != null) {
+            writes.add(INSERT_ODOMETRY, 4, (ps, p) -> {
+                ps.setInt(p, robotId);
+                ps.setLong(p + 1, t);
+                ps.setDouble(p + 2, answer.odometry().leftM());
+                ps.setDouble(p + 3, answer.odometry().rightM());
+            });
+        }
         long[] ids = answer.requestIds();
         if (ids.length > 0) {
             writes.add(markAnswered(ids.length), 2 + ids.length, (ps, p) -> {
@@ -417,7 +427,7 @@ public final class JdbcRobotLink implements RobotLink {
         int keep = policy.keepReadings();
         return withConnection("pruning reading history", c -> {
             int deleted = 0;
-            for (String table : new String[] {"gps_stored_values", "iudata", "battery_level"}) {
+            for (String table : new String[] {"gps_stored_values", "iudata", "battery_level", "odometry"}) {
                 deleted += RobotRows.pruneOlderThanNewest(c, robotId, table, "sim_time_ms", "", keep, queryTimeoutS);
             }
             // One distance reading = the rows sharing a sim_time_ms; served by idx_ds_time.

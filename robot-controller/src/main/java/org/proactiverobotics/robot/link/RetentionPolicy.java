@@ -4,7 +4,7 @@ package org.proactiverobotics.robot.link;
  * How much reading history the robot keeps, so that a long run does not grow its tables (and
  * the cost of each step) without limit. The robot prunes, for its own robot id, every
  * {@code everySteps} control steps: the readings it writes ({@code gps_stored_values},
- * {@code iudata}, {@code battery_level}: the newest {@code keepReadings} rows each;
+ * {@code iudata}, {@code battery_level}, {@code odometry}: the newest {@code keepReadings} rows each;
  * {@code distance_sensor_data}: the newest {@code keepReadings} readings, i.e. that many rows
  * per sensor). {@code sensor_requests}, {@code engine_comments} and the mission rows belong to
  * the engine, which bounds its own history; the robot only reads them (and marks requests

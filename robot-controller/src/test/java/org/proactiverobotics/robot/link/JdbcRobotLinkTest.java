@@ -148,14 +148,14 @@ class JdbcRobotLinkTest {
                     db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (" + robot + ", 'GPS', " + step + ")");
                     long[] ids = link.pendingRequests(robot).stream().mapToLong(SensorRequest::id).toArray();
                     link.answer(robot, new SensorAnswer(step * 32L, new GpsReading(step, 0), new IuReading(0, 0, step), ds,
-                            new BatteryReading(100 - step, false), ids));
+                            new BatteryReading(100 - step, false), new OdometryReading(0.01, -0.01), ids));
                 }
             }
             db.execute("INSERT INTO sensor_requests (robot_id, sensor, iteration) VALUES (1, 'IU', 99)");
             List<Object> requestsBefore = one(db, "SELECT COUNT(*) FROM sensor_requests");
             int deleted = link.prune(1, new RetentionPolicy(5, 1));
-            assertThat(deleted).isEqualTo(25 * 3 + 25 * 2);
-            for (String table : List.of("gps_stored_values", "iudata", "battery_level")) {
+            assertThat(deleted).isEqualTo(25 * 4 + 25 * 2);
+            for (String table : List.of("gps_stored_values", "iudata", "battery_level", "odometry")) {
                 assertThat(one(db, "SELECT COUNT(*), MIN(sim_time_ms) FROM " + table + " WHERE robot_id = 1"))
                         .as(table).containsExactly(5L, 25 * 32L);
                 assertThat(one(db, "SELECT COUNT(*) FROM " + table + " WHERE robot_id = 2")).containsExactly(30L);

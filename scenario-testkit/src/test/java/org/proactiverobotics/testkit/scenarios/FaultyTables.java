@@ -13,6 +13,7 @@ import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.WheelOdometry;
 import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.engine.tables.StrategyTable;
@@ -82,6 +83,12 @@ final class FaultyTables implements SensorReadings, SensorRequests, MissionTable
     public Optional<BatteryState> newestBattery() {
         check();
         return tables.readings().newestBattery();
+    }
+
+    @Override
+    public Optional<WheelOdometry> newestOdometry() {
+        check();
+        return tables.readings().newestOdometry();
     }
 
     @Override

@@ -24,6 +24,6 @@ public final class DataAcquisitionScenario implements Scenario {
     /** Active from the start: the meta-rule generates these at once. */
     @Override
     public List<Rule> firstRules() {
-        return List.of(new GetGPS(), new GetDS(), new GetIU(), new GetBattery());
+        return List.of(new GetGPS(), new GetDS(), new GetIU(), new GetBattery(), new GetOdometry());
     }
 }

@@ -8,7 +8,7 @@ import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
 
 /**
- * What GetGPS, GetDS, GetIU and GetBattery share: when no request for the sensor is pending
+ * What GetGPS, GetDS, GetIU, GetBattery and GetOdometry share: when no request for the sensor is pending
  * (guard) and its newest reading is older than the interval (condition), request a new one.
  * The engine's "now" is the newest GPS time, the robot's own clock as the engine sees it.
  * Under the lazy algorithm the readings are not even looked at while a request is pending.
