@@ -48,6 +48,7 @@ class IndoorNoiseTest extends CommandLineTest {
             assertThat(report.get("ruleFailures").getAsLong()).isZero();
             // Without a position the engine never sends the robot anywhere: it stays where it started.
             assertThat(report.get("distanceM").getAsDouble()).isLessThan(0.01);
+            assertThat(report.has("poseError")).as("the engine never had a pose to measure").isFalse();
             List<String> trace = Files.readAllLines(outDir.resolve("trace.jsonl"));
             assertThat(trace).isNotEmpty().allSatisfy(line -> assertThat(line).contains("\"gps\":null"));
             // The other sensors still answer.

@@ -142,6 +142,8 @@ class SensorErrorModelsTest {
         }
         double ratio = slipping.groundTruth().distanceM() / firm.groundTruth().distanceM();
         assertThat(ratio).isCloseTo(0.90, within(0.005));
+        // The encoders count what the wheels rolled, as commanded: the body's shortfall is odometry's error.
+        assertThat(slipping.robot().odometer().getTravelM()).containsExactly(firm.robot().odometer().getTravelM());
         // A motion error, not a sensor's: the GPS (no noise of its own) reads where the robot really is.
         assertThat(slipping.robot().gps().getValues()[0]).isEqualTo(slipping.groundTruth().x());
     }
