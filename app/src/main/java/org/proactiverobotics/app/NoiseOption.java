@@ -8,7 +8,8 @@ public final class NoiseOption {
 
     @Option(names = "--noise", paramLabel = "LEVEL", defaultValue = "none",
             description = "Seeded sensor noise on GPS, inertial unit and distance sensors, drawn from the world's seed:"
-                    + " none, small or realistic. Default: ${DEFAULT-VALUE} (the world file alone).")
+                    + " none, small, realistic (with GPS bias, heading drift, range error, wheel slip) or indoor"
+                    + " (realistic without GPS). Default: ${DEFAULT-VALUE} (the world file alone).")
     private String noise;
 
     /** @return what is wrong with the option, or null */

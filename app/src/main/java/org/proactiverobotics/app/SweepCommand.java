@@ -77,7 +77,7 @@ public final class SweepCommand implements Callable<Integer> {
     private List<Path> strategyFiles = new ArrayList<>();
 
     @Option(names = "--noise", paramLabel = "LEVEL", split = ",", defaultValue = "none",
-            description = "Sensor noise levels: none, small, realistic. Default: ${DEFAULT-VALUE}.")
+            description = "Sensor noise levels: none, small, realistic, indoor (docs/sensors.md). Default: ${DEFAULT-VALUE}.")
     private List<String> noise;
 
     @Option(names = "--seeds", paramLabel = "LIST",

@@ -73,6 +73,7 @@ public class ProactiveController extends RobotSuperclass {
     private long sensedSteps;
     /** The engine marked a checkpoint unreachable: the mission is over. */
     private boolean checkpointUnreachable;
+    private boolean noFixLogged;
     private Consumer<CommandRecord> commandListener = record -> { };
     /** Each wheel's travel since the start as of the last odometry reading written, metres: where the next one counts from. */
     private double reportedLeftM;
@@ -377,8 +378,16 @@ public class ProactiveController extends RobotSuperclass {
         }
     }
 
+    /** @return the GPS reading, or null without a fix: the request is answered, and no reading written ("no fix") */
     private GpsReading readGps() {
         double[] v = robot.gps().getValues();
+        if (Double.isNaN(v[0]) || Double.isNaN(v[1])) {
+            if (!noFixLogged) {
+                noFixLogged = true;
+                LOG.warn("robot {}: the GPS has no fix; GPS requests are answered with no reading", robotId);
+            }
+            return null;
+        }
         return new GpsReading(v[0], v[1]);
     }
 

@@ -17,6 +17,7 @@ import org.proactiverobotics.db.TestDatabases;
 import org.proactiverobotics.robot.link.JdbcRobotLink;
 import org.proactiverobotics.robot.link.RetentionPolicy;
 import org.proactiverobotics.sim2d.DistanceSensor;
+import org.proactiverobotics.sim2d.SensorNoise;
 import org.proactiverobotics.sim2d.SimRobot;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldSpec;
@@ -61,6 +62,29 @@ class ProactiveControllerTest {
                 assertThat(robot.mode()).isEqualTo(Mode.WAITING);
                 assertThat(robot.stoppedUntilNewCommand()).isFalse();
                 assertThat(sim.groundTruth().distanceM()).isZero();
+            }
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(DatabaseKind.class)
+    void withoutAGpsFixTheRequestIsAnsweredWithNoReadingAndTheOtherSensorsStillAnswer(DatabaseKind kind) throws Exception {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            FakeEngine engine = new FakeEngine(db.dataSource(), ROBOT);
+            Simulation sim = new Simulation(TestWorlds.arena(), SensorNoise.NONE.withoutGps());
+            try (ProactiveController robot = controller(db, sim, CONFIG)) {
+                robot.controlStep();
+                engine.request("GPS");
+                engine.request("IU");
+                robot.sense();
+                assertThat(engine.pending()).isZero(); // answered: "no fix", not left waiting
+                assertThat(engine.count("gps_stored_values")).isZero();
+                assertThat(engine.longValue("SELECT COUNT(*) FROM iudata WHERE robot_id = 7")).isEqualTo(1);
+                assertThat(robot.stats().requestsAnswered()).isEqualTo(2);
+                engine.request("GPS");
+                robot.sense();
+                assertThat(engine.pending()).isZero();
+                assertThat(engine.count("gps_stored_values")).isZero();
             }
         }
     }

@@ -1,17 +1,27 @@
 package org.proactiverobotics.sim2d;
 
 /**
- * Gaussian noise added to sensor readings; standard deviations, zero for none.
+ * The sensors' errors and the wheels' slip; zero for none.
  * <p>
+ * White Gaussian noise on each reading ({@link #gpsSigmaM}, {@link #yawSigmaRad}, {@link #distanceSigmaM}), and the
+ * errors real sensors have beyond it: a wandering GPS bias, a drifting gyro heading, a distance error that grows
+ * with the distance, wheel slip; and whether the GPS has a fix at all (indoors it has none: it reads NaN).
  * Noise is not part of the world file (its format is a contract); the caller chooses it when creating the
  * {@link Simulation}. Draws are a pure function of the world's seed, the step number and the channel, so
- * readings are the same bit for bit however often (or seldom) a controller reads them.
+ * readings are the same bit for bit however often (or seldom) a controller reads them; the errors beyond white
+ * noise draw from streams of their own, so adding them shifts none of the white draws.
  *
- * @param gpsSigmaM      on each GPS coordinate, metres
- * @param yawSigmaRad    on the inertial unit's yaw, radians
- * @param distanceSigmaM on each distance sensor, metres (the reading stays within 0..range)
+ * @param gpsSigmaM      white noise on each GPS coordinate, metres
+ * @param yawSigmaRad    white noise on the inertial unit's yaw, radians
+ * @param distanceSigmaM white noise on each distance sensor, metres (the reading stays within 0..range)
+ * @param rangeError     the distance sensors' error that grows with the distance
+ * @param gpsBias        the GPS's wandering bias
+ * @param headingDrift   the inertial unit's heading drift
+ * @param wheelSlip      the wheels' slip (moves the robot, not a reading)
+ * @param gpsFix         whether the GPS has a fix; without one it reads NaN (no absolute position, as indoors)
  */
-public record SensorNoise(double gpsSigmaM, double yawSigmaRad, double distanceSigmaM) {
+public record SensorNoise(double gpsSigmaM, double yawSigmaRad, double distanceSigmaM, RangeError rangeError,
+                          GpsBias gpsBias, HeadingDrift headingDrift, WheelSlip wheelSlip, boolean gpsFix) {
 
     /** Perfect sensors. */
     public static final SensorNoise NONE = new SensorNoise(0.0, 0.0, 0.0);
@@ -19,22 +29,50 @@ public record SensorNoise(double gpsSigmaM, double yawSigmaRad, double distanceS
     /** Small noise, roughly that of Webots' default devices: 1 cm GPS, 0.5° yaw, 1 cm distance. */
     public static final SensorNoise SMALL = new SensorNoise(0.01, Math.toRadians(0.5), 0.01);
 
-    /** Refuses negative or non-finite deviations. */
+    /** Refuses negative or non-finite deviations and missing error models. */
     public SensorNoise {
         check(gpsSigmaM, "gpsSigmaM");
         check(yawSigmaRad, "yawSigmaRad");
         check(distanceSigmaM, "distanceSigmaM");
+        if (rangeError == null || gpsBias == null || headingDrift == null || wheelSlip == null) {
+            throw new IllegalArgumentException("rangeError, gpsBias, headingDrift and wheelSlip must be given (NONE for none)");
+        }
     }
 
-    private static void check(double v, String name) {
+    /**
+     * White noise only, a GPS with a fix, no error beyond.
+     *
+     * @param gpsSigmaM      on each GPS coordinate, metres
+     * @param yawSigmaRad    on the inertial unit's yaw, radians
+     * @param distanceSigmaM on each distance sensor, metres
+     */
+    public SensorNoise(double gpsSigmaM, double yawSigmaRad, double distanceSigmaM) {
+        this(gpsSigmaM, yawSigmaRad, distanceSigmaM, RangeError.NONE, GpsBias.NONE, HeadingDrift.NONE, WheelSlip.NONE, true);
+    }
+
+    /** @return the same errors with a GPS that never has a fix */
+    public SensorNoise withoutGps() {
+        return new SensorNoise(gpsSigmaM, yawSigmaRad, distanceSigmaM, rangeError, gpsBias, headingDrift, wheelSlip, false);
+    }
+
+    /**
+     * @param distanceM the true distance, metres
+     * @return the standard deviation of a distance reading at that distance, metres
+     */
+    public double distanceSigmaAtM(double distanceM) {
+        return distanceSigmaM + rangeError.sigmaAtM(distanceM);
+    }
+
+    static void check(double v, String name) {
         if (!Double.isFinite(v) || v < 0) {
             throw new IllegalArgumentException(name + " must be finite and >= 0, got " + v);
         }
     }
 
-    /** @return whether every deviation is zero */
+    /** @return whether every deviation is zero, nothing slips and the GPS has a fix */
     public boolean isNone() {
-        return gpsSigmaM == 0.0 && yawSigmaRad == 0.0 && distanceSigmaM == 0.0;
+        return gpsSigmaM == 0.0 && yawSigmaRad == 0.0 && distanceSigmaM == 0.0 && rangeError.fractionOfRange() == 0.0
+                && gpsBias.isNone() && headingDrift.isNone() && wheelSlip.isNone() && gpsFix;
     }
 
     /**

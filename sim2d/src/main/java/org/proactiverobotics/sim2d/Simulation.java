@@ -42,6 +42,7 @@ public final class Simulation {
 
     private final WorldSpec spec;
     private final SensorNoise noise;
+    private final SensorErrors errors;
     private final double dt;
     private final World<Body> world;
     private final Body robotBody;
@@ -69,12 +70,13 @@ public final class Simulation {
 
     /**
      * @param spec  the world
-     * @param noise the sensors' Gaussian noise, drawn from the world's seed
+     * @param noise the sensors' errors and the wheels' slip, drawn from the world's seed
      */
     public Simulation(WorldSpec spec, SensorNoise noise) {
         this.spec = spec;
         this.noise = noise;
         this.dt = spec.timeStepS();
+        this.errors = new SensorErrors(noise, spec.seed(), dt);
         this.world = new World<>();
         Settings settings = world.getSettings();
         // dyn4j names it a frequency but takes the step period in seconds.
@@ -173,8 +175,14 @@ public final class Simulation {
         double x0 = t.getTranslationX();
         double y0 = t.getTranslationY();
         if (level > 0.0) {
-            double v = (robot.leftSpeedMps() + robot.rightSpeedMps()) / 2.0;
-            double w = (robot.rightSpeedMps() - robot.leftSpeedMps()) / robot.axleWidthM();
+            double left = robot.leftSpeedMps();
+            double right = robot.rightSpeedMps();
+            if (!noise.wheelSlip().isNone()) {
+                left *= errors.slipFactor(steps, 0);
+                right *= errors.slipFactor(steps, 1);
+            }
+            double v = (left + right) / 2.0;
+            double w = (right - left) / robot.axleWidthM();
             double heading = t.getRotationAngle();
             robotBody.setLinearVelocity(v * Math.cos(heading), v * Math.sin(heading));
             robotBody.setAngularVelocity(w);
@@ -186,6 +194,7 @@ public final class Simulation {
         }
         world.step(1);
         steps++;
+        errors.advance(steps);
         double dx = t.getTranslationX() - x0;
         double dy = t.getTranslationY() - y0;
         afterStep(Math.sqrt(dx * dx + dy * dy));
@@ -328,9 +337,16 @@ public final class Simulation {
     // ---- device back-ends (package-private: devices call these) ----
 
     double[] gpsValues() {
+        if (!noise.gpsFix()) {
+            return new double[] {Double.NaN, Double.NaN};
+        }
         Vector2 p = robotBody.getTransform().getTranslation();
         double x = p.x;
         double y = p.y;
+        if (!noise.gpsBias().isNone()) {
+            x += errors.gpsBiasXM();
+            y += errors.gpsBiasYM();
+        }
         if (noise.gpsSigmaM() > 0.0) {
             x += noise.gpsSigmaM() * SensorNoise.gaussian(spec.seed(), steps, 0);
             y += noise.gpsSigmaM() * SensorNoise.gaussian(spec.seed(), steps, 1);
@@ -340,6 +356,9 @@ public final class Simulation {
 
     double yawValue() {
         double yaw = robotBody.getTransform().getRotationAngle();
+        if (!noise.headingDrift().isNone()) {
+            yaw += errors.headingErrorRad();
+        }
         if (noise.yawSigmaRad() > 0.0) {
             yaw += noise.yawSigmaRad() * SensorNoise.gaussian(spec.seed(), steps, 2);
         }
@@ -372,8 +391,9 @@ public final class Simulation {
             // Cast from the centre so that a ray starting inside a touching obstacle still hits it.
             RaycastResult<Body, BodyFixture> hit = world.raycastClosest(ray, radius + range, staticOnly);
             double d = hit == null ? range : Math.min(range, Math.max(0.0, hit.getRaycast().getDistance() - radius));
-            if (noise.distanceSigmaM() > 0.0) {
-                d += noise.distanceSigmaM() * SensorNoise.gaussian(spec.seed(), steps, 3 + i);
+            double sigma = noise.distanceSigmaAtM(d);
+            if (sigma > 0.0) {
+                d += sigma * SensorNoise.gaussian(spec.seed(), steps, 3 + i);
                 d = Math.max(0.0, Math.min(range, d));
             }
             distanceCache[i] = d;
@@ -411,7 +431,7 @@ public final class Simulation {
         return spec;
     }
 
-    /** @return the sensor noise in use */
+    /** @return the sensor errors and wheel slip in use */
     public SensorNoise noise() {
         return noise;
     }
