@@ -11,7 +11,6 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.proactiverobotics.app.sweep.WorldJson;
-import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -25,9 +24,7 @@ class IndoorNoiseTest extends CommandLineTest {
 
     /** The reference arena with an 8 s time limit. */
     private Path shortWorld() throws IOException {
-        WorldSpec ref = WorldFiles.bundled("reference-arena");
-        WorldSpec s = new WorldSpec("short-indoor", ref.timeStepMs(), 8.0, 7, ref.arena(), ref.robot(), ref.obstacles(),
-                ref.checkpoints(), ref.checkpointRadiusM(), ref.rechargeStation(), ref.battery());
+        WorldSpec s = Missions.shortReferenceArena("short-indoor", 8.0);
         Path file = tmp.resolve("short-indoor.json");
         Files.writeString(file, WorldJson.of(s));
         return file;

@@ -46,6 +46,17 @@ final class Missions {
     private Missions() {
     }
 
+    /**
+     * @param name       the world's name
+     * @param timeLimitS its maxSimTimeS, seconds
+     * @return the bundled reference arena with that name and time limit (seed 7): a mission that ends quickly
+     */
+    static WorldSpec shortReferenceArena(String name, double timeLimitS) {
+        WorldSpec ref = WorldFiles.bundled("reference-arena");
+        return new WorldSpec(name, ref.timeStepMs(), timeLimitS, 7, ref.arena(), ref.robot(), ref.obstacles(),
+                ref.checkpoints(), ref.checkpointRadiusM(), ref.rechargeStation(), ref.battery());
+    }
+
     /** The run of a bundled world with safety-first on H2, done once per test JVM. */
     static Run onH2(String world) {
         return H2_RUNS.computeIfAbsent(world, w -> run(w, DatabaseKind.H2, "safety-first", sim -> { }));

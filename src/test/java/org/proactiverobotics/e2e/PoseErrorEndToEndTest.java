@@ -17,7 +17,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.proactiverobotics.app.mission.PoseError;
 import org.proactiverobotics.app.sweep.WorldJson;
-import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -90,9 +89,7 @@ class PoseErrorEndToEndTest extends CommandLineTest {
     /** results.csv's four new columns come last, and hold report.json's figures, value for value. */
     @Test
     void resultsCsvHasThePoseErrorOfEachMissionsReport() throws Exception {
-        WorldSpec ref = WorldFiles.bundled("reference-arena");
-        WorldSpec shortWorld = new WorldSpec("short-limit", ref.timeStepMs(), 3.0, 7, ref.arena(), ref.robot(),
-                ref.obstacles(), ref.checkpoints(), ref.checkpointRadiusM(), ref.rechargeStation(), ref.battery());
+        WorldSpec shortWorld = Missions.shortReferenceArena("short-limit", 3.0);
         Path world = Files.writeString(tmp.resolve("short-limit.json"), WorldJson.of(shortWorld));
         Path out = tmp.resolve("sweep");
         assertThat(run("sweep", "--worlds", world.toString(), "--noise", "none,realistic", "--link", "direct",

@@ -45,9 +45,7 @@ class SweepCommandTest extends CommandLineTest {
 
     /** The reference arena with a 3 s time limit: a mission that must end TIME_LIMIT, quickly. */
     private Path shortWorld() throws IOException {
-        WorldSpec ref = WorldFiles.bundled("reference-arena");
-        WorldSpec s = new WorldSpec("short-limit", ref.timeStepMs(), 3.0, 7, ref.arena(), ref.robot(), ref.obstacles(),
-                ref.checkpoints(), ref.checkpointRadiusM(), ref.rechargeStation(), ref.battery());
+        WorldSpec s = Missions.shortReferenceArena("short-limit", 3.0);
         Path dir = Files.createDirectories(tmp.resolve("worlds"));
         Files.writeString(dir.resolve("short-limit.json"), WorldJson.of(s));
         return dir;

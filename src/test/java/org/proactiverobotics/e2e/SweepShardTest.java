@@ -18,7 +18,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.proactiverobotics.app.sweep.Shard;
 import org.proactiverobotics.app.sweep.WorldJson;
-import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -34,11 +33,9 @@ class SweepShardTest extends CommandLineTest {
 
     /** Two short worlds (3 s and 4 s limits) x two noise levels: four missions that end quickly. */
     private String worlds() throws IOException {
-        WorldSpec ref = WorldFiles.bundled("reference-arena");
         Path dir = Files.createDirectories(tmp.resolve("worlds"));
         for (int limit : new int[] {3, 4}) {
-            WorldSpec s = new WorldSpec("short-" + limit, ref.timeStepMs(), limit, 7, ref.arena(), ref.robot(), ref.obstacles(),
-                    ref.checkpoints(), ref.checkpointRadiusM(), ref.rechargeStation(), ref.battery());
+            WorldSpec s = Missions.shortReferenceArena("short-" + limit, limit);
             Files.writeString(dir.resolve("short-" + limit + ".json"), WorldJson.of(s));
         }
         return dir.toString();

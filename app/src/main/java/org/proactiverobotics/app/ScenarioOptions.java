@@ -18,8 +18,7 @@ import picocli.CommandLine.Option;
 public final class ScenarioOptions {
 
     /** The engine's start order as the help texts state it (an annotation needs a constant; StartOrderTest checks it). */
-    static final String START_ORDER = "DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins"
-            + " → ObstacleAvoidance → FailSafe → DecisionMaking";
+    static final String START_ORDER = RobotEngine.ORDER_TEXT;
 
     @Option(names = "--scenarios", paramLabel = "PATH", split = ",",
             description = "Scenario plug-ins: jars, or folders of jars, listing their scenarios in"

@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import javax.sql.DataSource;
+import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.robot.link.MissionSpec;
 
 /**
@@ -73,9 +74,8 @@ public final class StoredMission {
         same = same && station.map(s -> near(s, mission.station().xM(), mission.station().yM())).orElse(true);
         if (!same) {
             throw new Mismatch(String.format(Locale.ROOT, "the database already holds a different mission for robot %d"
-                    + " (%d %s stored, the world has %d): start this world with another --robot-id, or on an"
-                    + " empty database", robotId, stored.size(), stored.size() == 1 ? "checkpoint" : "checkpoints",
-                    mission.checkpoints().size()));
+                    + " (%s stored, the world has %d): start this world with another --robot-id, or on an"
+                    + " empty database", robotId, Plural.of(stored.size(), "checkpoint"), mission.checkpoints().size()));
         }
     }
 

@@ -242,8 +242,8 @@ public final class McapRecorder implements AutoCloseable {
     private static int level(String type) {
         return switch (type) {
             case TraceEvent.RULE_FAILURE -> 4;
-            case TraceEvent.COLLISION, TraceEvent.FAIL_SAFE -> 3;
-            default -> type.endsWith("Unreachable") ? 3 : 2;
+            case TraceEvent.COLLISION, TraceEvent.FAIL_SAFE, TraceEvent.CHECKPOINT_UNREACHABLE -> 3;
+            default -> 2;
         };
     }
 

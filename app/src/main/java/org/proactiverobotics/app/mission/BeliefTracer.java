@@ -65,7 +65,7 @@ final class BeliefTracer implements BeliefObserver {
     @Override
     public void mapChanged(long iteration, List<MapChunk> chunks) {
         for (MapChunk c : chunks) {
-            long at = ((long) c.chunkX() << 32) ^ (c.chunkY() & 0xffffffffL);
+            long at = chunkKey(c.chunkX(), c.chunkY());
             byte[] known = mirror.computeIfAbsent(at, k -> new byte[CHUNK * CHUNK]);
             byte[] cells = c.cells();
             for (int q = 0; q < cells.length; q++) {
@@ -113,6 +113,11 @@ final class BeliefTracer implements BeliefObserver {
     /** Sorts as (iy, ix): the row in the high half, the column with its sign bit flipped so that it sorts as signed. */
     private static long key(int ix, int iy) {
         return ((long) iy << 32) | ((ix ^ 0x80000000) & 0xffffffffL);
+    }
+
+    /** A chunk's key in {@link #mirror}: its column in the high half, its row in the low. */
+    private static long chunkKey(int cx, int cy) {
+        return ((long) cx << 32) ^ (cy & 0xffffffffL);
     }
 
     private void add(long k) {
@@ -198,7 +203,7 @@ final class BeliefTracer implements BeliefObserver {
     }
 
     private byte state(int ix, int iy) {
-        byte[] c = mirror.get(((long) Math.floorDiv(ix, CHUNK) << 32) ^ (Math.floorDiv(iy, CHUNK) & 0xffffffffL));
+        byte[] c = mirror.get(chunkKey(Math.floorDiv(ix, CHUNK), Math.floorDiv(iy, CHUNK)));
         return c[Math.floorMod(iy, CHUNK) * CHUNK + Math.floorMod(ix, CHUNK)];
     }
 }

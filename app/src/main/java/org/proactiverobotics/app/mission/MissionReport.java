@@ -97,7 +97,7 @@ public record MissionReport(
         return colon < 0 ? rest : rest.substring(0, colon);
     }
 
-    private static double round(double value, int decimals) {
+    static double round(double value, int decimals) {
         double scale = Math.pow(10, decimals);
         return Math.round(value * scale) / scale;
     }

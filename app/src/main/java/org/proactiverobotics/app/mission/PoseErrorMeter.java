@@ -57,6 +57,6 @@ final class PoseErrorMeter {
     }
 
     private static double round(double value) {
-        return Math.round(value * 1e4) / 1e4;
+        return MissionReport.round(value, 4);
     }
 }

@@ -16,11 +16,6 @@ import java.io.IOException;
  */
 public record TraceBelief(double[] pose, double[] route, int[] mapDelta, String reason) {
 
-    /** @return whether there is nothing to write */
-    public boolean isEmpty() {
-        return pose == null && route == null && mapDelta == null && reason == null;
-    }
-
     /**
      * Writes the fields present, inside the line's object.
      *

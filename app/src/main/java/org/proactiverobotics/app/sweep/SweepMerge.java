@@ -16,6 +16,7 @@ import java.util.TreeMap;
 import java.util.function.IntFunction;
 import java.util.stream.Collectors;
 import org.apache.commons.csv.CSVParser;
+import org.proactiverobotics.app.Plural;
 import org.apache.commons.csv.CSVRecord;
 
 /**
@@ -112,9 +113,8 @@ public final class SweepMerge {
             wallS += row.wallTimeS();
         }
         String lead = String.format(Locale.ROOT,
-                "%d of %d %s accomplished; merged from %d %s (%.1f s of missions' wall time in all)",
-                accomplished, rows.size(), rows.size() == 1 ? "mission" : "missions", bySlice.size(),
-                bySlice.size() == 1 ? "shard" : "shards", wallS);
+                "%d of %s accomplished; merged from %s (%.1f s of missions' wall time in all)",
+                accomplished, Plural.of(rows.size(), "mission"), Plural.of(bySlice.size(), "shard"), wallS);
         Files.createDirectories(out);
         // both files whole or not at all: written beside, then moved in, results.csv last
         String part = "." + ProcessHandle.current().pid() + ".part"; // created as any file is (the umask's permissions)
@@ -229,7 +229,7 @@ public final class SweepMerge {
             return "program " + a.version() + " against " + b.version();
         }
         if (a.missions() != b.missions()) {
-            return a.missions() + (a.missions() == 1 ? " mission against " : " missions against ") + b.missions();
+            return Plural.of(a.missions(), "mission") + " against " + b.missions();
         }
         return "the same number of missions, but other worlds, strategies, noise levels, seeds or plug-ins";
     }

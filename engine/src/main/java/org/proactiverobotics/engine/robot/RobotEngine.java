@@ -73,8 +73,8 @@ public final class RobotEngine {
 
     /** Where the plug-ins stand in {@link #startOrder}'s phrase, {@value}. */
     public static final String PLUGINS = "plug-ins";
-    /** The start order, for the javadoc: {@link #startOrderPhrase()}, which a test keeps it equal to. */
-    static final String ORDER_TEXT = "DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins"
+    /** The start order, for the javadoc and the help texts: {@link #startOrderPhrase()}, which a test keeps it equal to. */
+    public static final String ORDER_TEXT = "DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins"
             + " → ObstacleAvoidance → FailSafe → DecisionMaking";
     /** Prune the engine's history every this many iterations (finding the cut-off walks the kept rows: seldom is cheaper). */
     public static final int PRUNE_EVERY = 500;
