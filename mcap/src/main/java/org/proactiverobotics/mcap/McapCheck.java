@@ -315,8 +315,8 @@ public final class McapCheck {
         long len = u64(pos + 1);
         long content = pos + Opcode.RECORD_PREFIX;
         if (len < 0 || len > b.length - content) {
-            throw new Cut("the file ends inside a " + Opcode.name(op) + " record that starts at byte " + pos + " and needs "
-                    + (Opcode.RECORD_PREFIX + len) + " bytes");
+            throw new Cut("the file ends inside a " + Opcode.name(op) + " record of " + (Opcode.RECORD_PREFIX + len)
+                    + " bytes that starts at byte " + pos);
         }
         return len;
     }
