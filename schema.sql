@@ -107,6 +107,16 @@ CREATE TABLE IF NOT EXISTS recharge_station (
   radius_m DOUBLE NOT NULL
 );
 
+-- Where the robot stands when the mission starts (mission row, seeded from the world file): the
+-- initial pose an operator gives a localiser, the one place a robot without GPS learns where it
+-- is in the mission's frame. Metres; heading in radians, counter-clockwise from +x.
+CREATE TABLE IF NOT EXISTS initial_pose (
+  robot_id INT    NOT NULL PRIMARY KEY,
+  x_m      DOUBLE NOT NULL,
+  y_m      DOUBLE NOT NULL,
+  yaw_rad  DOUBLE NOT NULL
+);
+
 -- ======================================================================================
 -- Sensors beyond the paper's
 -- ======================================================================================
@@ -184,6 +194,27 @@ CREATE TABLE IF NOT EXISTS occupancy_map (
   cells               VARBINARY(256) NOT NULL,
   updated_sim_time_ms BIGINT         NOT NULL,
   PRIMARY KEY (robot_id, chunk_x, chunk_y)
+);
+
+-- The engine's pose estimate (the Localisation scenario): one row per iteration, the robot's
+-- position (metres) and heading (radians) as odometry, the inertial unit, the GPS (when there is
+-- one) and the scan matched against the occupancy map put it, with the estimate's covariance
+-- (square metres, metre-radians, square radians). Every scenario that needs the robot's pose reads
+-- the newest row, never the raw GPS. The engine keeps its newest rows (pruned like its commands).
+CREATE TABLE IF NOT EXISTS pose_estimate (
+  id          BIGINT AUTO_INCREMENT PRIMARY KEY,
+  robot_id    INT    NOT NULL,
+  sim_time_ms BIGINT NOT NULL,
+  x_m         DOUBLE NOT NULL,
+  y_m         DOUBLE NOT NULL,
+  yaw_rad     DOUBLE NOT NULL,
+  var_x       DOUBLE NOT NULL,
+  var_y       DOUBLE NOT NULL,
+  var_yaw     DOUBLE NOT NULL,
+  cov_xy      DOUBLE NOT NULL,
+  cov_x_yaw   DOUBLE NOT NULL,
+  cov_y_yaw   DOUBLE NOT NULL,
+  INDEX idx_pose_estimate_time (robot_id, sim_time_ms, id)
 );
 
 -- Every failure of a rule part: which rule, of which scenario, which part, and why.

@@ -23,6 +23,7 @@ GRANT SELECT ON `@DATABASE@`.battery_level TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.odometry TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.battery_recharged TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@ENGINE_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.initial_pose TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.robot_clock TO '@ENGINE_USER@'@'@HOST@';
 -- it marks checkpoints reached or unreachable (and neither when a new robot run starts)
 GRANT SELECT, UPDATE (reached, reached_sim_time_ms, unreachable) ON `@DATABASE@`.checkpoints TO '@ENGINE_USER@'@'@HOST@';
@@ -34,6 +35,7 @@ GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_queue TO '@ENGINE_US
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.rule_failures TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.engine_clock TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE, DELETE ON `@DATABASE@`.occupancy_map TO '@ENGINE_USER@'@'@HOST@';
+GRANT SELECT, INSERT, DELETE ON `@DATABASE@`.pose_estimate TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE ON `@DATABASE@`.engine_lease TO '@ENGINE_USER@'@'@HOST@';
 
 -- ---- The robot: writes its readings, answers requests, reads commands ----------------------
@@ -50,6 +52,7 @@ GRANT SELECT ON `@DATABASE@`.engine_clock TO '@ROBOT_USER@'@'@HOST@';
 -- the mission rows, seeded from the world file once per robot id
 GRANT SELECT, INSERT ON `@DATABASE@`.checkpoints TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT ON `@DATABASE@`.recharge_station TO '@ROBOT_USER@'@'@HOST@';
+GRANT SELECT, INSERT ON `@DATABASE@`.initial_pose TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT ON `@DATABASE@`.battery_recharged TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE ON `@DATABASE@`.robot_clock TO '@ROBOT_USER@'@'@HOST@';
 
@@ -64,6 +67,8 @@ GRANT SELECT ON `@DATABASE@`.battery_level TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.odometry TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.checkpoints TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.initial_pose TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.rule_failures TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.strategy TO '@VIEWER_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.occupancy_map TO '@VIEWER_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.pose_estimate TO '@VIEWER_USER@'@'@HOST@';

@@ -13,7 +13,7 @@ public final class Missions {
 
     /**
      * @param world the parsed world file
-     * @return its checkpoints (each with the world's checkpoint radius), station and recharge level
+     * @return its checkpoints (each with the world's checkpoint radius), station, recharge level and start pose
      */
     public static MissionSpec of(WorldSpec world) {
         List<MissionSpec.Checkpoint> checkpoints = new ArrayList<>(world.checkpoints().size());
@@ -22,6 +22,7 @@ public final class Missions {
         }
         WorldSpec.RechargeStation s = world.rechargeStation();
         return new MissionSpec(checkpoints, new MissionSpec.Station(s.x(), s.y(), s.radiusM()),
-                world.battery().rechargeTo());
+                world.battery().rechargeTo(),
+                new MissionSpec.Start(world.robot().x(), world.robot().y(), Math.toRadians(world.robot().headingDeg())));
     }
 }

@@ -22,6 +22,7 @@ import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.engine.scenario.dataacquisition.DataAcquisitionScenario;
 import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
 import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
+import org.proactiverobotics.engine.scenario.localisation.LocalisationScenario;
 import org.proactiverobotics.engine.tables.EngineTables;
 
 /**
@@ -77,6 +78,7 @@ public final class ScenarioKit implements AutoCloseable {
             ScenarioPlugins plugins = ScenarioPlugins.of(b.scenarios.toArray(Scenario[]::new));
             Set<String> names = new LinkedHashSet<>(b.builtIns);
             names.addAll(plugins.scenarios().keySet());
+            names.add(LocalisationScenario.NAME); // the pose every scenario reads: the fix and heading as given, or filtered odometry
             names.add(DecisionMakingScenario.NAME);
             this.engine = RobotEngine.builder()
                     .robotId(ROBOT_ID)

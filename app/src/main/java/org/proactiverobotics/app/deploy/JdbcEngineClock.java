@@ -145,7 +145,8 @@ public final class JdbcEngineClock implements EngineClock {
                 RobotRows.run(c, robotId, List.of("DELETE FROM engine_comments WHERE robot_id = ?",
                         "DELETE FROM sensor_requests WHERE robot_id = ?",
                         "UPDATE checkpoints SET reached = FALSE, reached_sim_time_ms = NULL, unreachable = FALSE WHERE robot_id = ?",
-                        "DELETE FROM occupancy_map WHERE robot_id = ?"));
+                        "DELETE FROM occupancy_map WHERE robot_id = ?",
+                        "DELETE FROM pose_estimate WHERE robot_id = ?"));
                 c.commit();
             } catch (SQLException | RuntimeException e) {
                 c.rollback();

@@ -15,6 +15,9 @@ import org.proactiverobotics.engine.tables.OccupancyMapTable;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
+import org.proactiverobotics.engine.tables.InitialPose;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.engine.tables.StrategyTable;
 import org.proactiverobotics.engine.tables.WheelOdometry;
@@ -24,7 +27,8 @@ import org.proactiverobotics.engine.tables.WheelOdometry;
  * JdbcRobotTables, over the link's memory. Never throws for want of a database.
  */
 public final class DirectEngineTables
-        implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments, OccupancyMapTable {
+        implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments, OccupancyMapTable,
+        PoseEstimateTable {
 
     private final DirectRows rows;
 
@@ -106,6 +110,21 @@ public final class DirectEngineTables
     @Override
     public void writeChunks(List<MapChunk> chunks, long simTimeMs) {
         rows.map().writeChunks(chunks, simTimeMs);
+    }
+
+    @Override
+    public Optional<PoseEstimate> newestPose() {
+        return Optional.ofNullable(rows.pose());
+    }
+
+    @Override
+    public void writePose(PoseEstimate estimate) {
+        rows.pose(estimate);
+    }
+
+    @Override
+    public Optional<InitialPose> initialPose() {
+        return Optional.ofNullable(rows.initialPose());
     }
 
     @Override

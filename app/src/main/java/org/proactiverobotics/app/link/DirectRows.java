@@ -12,6 +12,8 @@ import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.OccupancyMapTable;
+import org.proactiverobotics.engine.tables.InitialPose;
+import org.proactiverobotics.engine.tables.PoseEstimate;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.engine.tables.StrategyTable;
 import org.proactiverobotics.engine.tables.WheelOdometry;
@@ -55,6 +57,8 @@ final class DirectRows {
     private final ArrayDeque<CommandRecord> commands = new ArrayDeque<>();
     private List<Checkpoint> checkpoints = List.of();
     private Station station;
+    private InitialPose initialPose;
+    private PoseEstimate pose;
     private Double rechargeLevelPct;
     private List<StrategyTable.Entry> strategy = List.of();
     /** occupancy_map's rows: the engine side alone writes and reads them. */
@@ -145,6 +149,10 @@ final class DirectRows {
         }
         if (rechargeLevelPct == null) {
             rechargeLevelPct = mission.rechargeToPct();
+            wrote = true;
+        }
+        if (initialPose == null && mission.start() != null) {
+            initialPose = new InitialPose(mission.start().xM(), mission.start().yM(), mission.start().yawRad());
             wrote = true;
         }
         return wrote;
@@ -252,6 +260,19 @@ final class DirectRows {
     /** @return occupancy_map's rows, kept in memory */
     OccupancyMapTable map() {
         return map;
+    }
+
+    synchronized InitialPose initialPose() {
+        return initialPose;
+    }
+
+    /** @return the newest pose estimate the engine side wrote, or null */
+    synchronized PoseEstimate pose() {
+        return pose;
+    }
+
+    synchronized void pose(PoseEstimate estimate) {
+        pose = estimate;
     }
 
     synchronized Station station() {

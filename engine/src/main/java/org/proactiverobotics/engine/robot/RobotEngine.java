@@ -36,12 +36,14 @@ import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
 import org.proactiverobotics.engine.scenario.decision.DecisionObserver;
 import org.proactiverobotics.engine.scenario.destination.ReachDestinationScenario;
 import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
+import org.proactiverobotics.engine.scenario.localisation.LocalisationScenario;
 import org.proactiverobotics.engine.scenario.mapping.MappingScenario;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMapTable;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.StrategyTable;
@@ -74,7 +76,7 @@ public final class RobotEngine {
     /** Where the plug-ins stand in {@link #startOrder}'s phrase, {@value}. */
     public static final String PLUGINS = "plug-ins";
     /** The start order, for the javadoc and the help texts: {@link #startOrderPhrase()}, which a test keeps it equal to. */
-    public static final String ORDER_TEXT = "DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins"
+    public static final String ORDER_TEXT = "DataAcquisition → Localisation → Mapping → BatteryMonitor → ReachDestination → plug-ins"
             + " → ObstacleAvoidance → FailSafe → DecisionMaking";
     /** Prune the engine's history every this many iterations (finding the cut-off walks the kept rows: seldom is cheaper). */
     public static final int PRUNE_EVERY = 500;
@@ -83,10 +85,12 @@ public final class RobotEngine {
 
     /**
      * Built-in scenarios with their slots (-1: none), started in this order (the paper's 1 → 4 → 2 → 3,
-     * Mapping after 1), the plug-ins before ObstacleAvoidance: the collision monitor vets any scenario's command.
+     * Localisation then Mapping after 1: every later scenario reads this iteration's pose), the plug-ins before
+     * ObstacleAvoidance: the collision monitor vets any scenario's command.
      */
     private static final Map<String, Integer> FIRST = orderedMap(
             DataAcquisitionScenario.NAME, -1,
+            LocalisationScenario.NAME, -1,
             MappingScenario.NAME, -1,
             BatteryMonitorScenario.NAME, 1,
             ReachDestinationScenario.NAME, 0,
@@ -448,6 +452,11 @@ public final class RobotEngine {
         return base.mission() instanceof OccupancyMapTable map ? map : OccupancyMapTable.inMemory();
     }
 
+    /** The layer's pose-estimate rows when its mission tables have them, else an estimate kept in memory. */
+    private static PoseEstimateTable poseTable(EngineTables base) {
+        return base.mission() instanceof PoseEstimateTable poses ? poses : PoseEstimateTable.inMemory();
+    }
+
     /** Configures a {@link RobotEngine}; every setting but the tables has a default. */
     public static final class Builder {
         private int robotId = 1;
@@ -621,6 +630,7 @@ public final class RobotEngine {
                     .service(EngineComments.class, wired.comments())
                     .service(OccupancyMapTable.class, knownMap.table())
                     .service(KnownMap.class, knownMap)
+                    .service(PoseEstimateTable.class, poseTable(base))
                     .service(DriveProfile.class, drive);
             freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {

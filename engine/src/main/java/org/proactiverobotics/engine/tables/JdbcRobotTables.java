@@ -27,7 +27,8 @@ import org.proactiverobotics.engine.persistence.IterationTransaction;
  * rules ask. Outside an iteration every call is its own statement, as before.
  */
 public final class JdbcRobotTables
-        implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments, OccupancyMapTable {
+        implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments, OccupancyMapTable,
+        PoseEstimateTable {
 
     private final DataSource dataSource;
     private final int robotId;
@@ -38,6 +39,9 @@ public final class JdbcRobotTables
     private IterationSnapshot readAhead;
     private List<Object[]> pendingRequests = new ArrayList<>();
     private List<Object[]> pendingMarks = new ArrayList<>();
+    /** The pose estimate the open iteration wrote (its later reads see it), or null. */
+    private PoseEstimate writtenPose;
+    private long writtenPoseIteration = -1;
     private long snapshotLoads;
 
     private static final MultiRow INSERT_REQUESTS = MultiRow.insert("sensor_requests", "robot_id", "sensor", "iteration");
@@ -45,6 +49,8 @@ public final class JdbcRobotTables
             "UPDATE checkpoints SET reached = TRUE, reached_sim_time_ms = ? WHERE robot_id = ? AND seq = ?";
     private static final MultiRow UPSERT_CHUNKS = MultiRow.upsert("occupancy_map", List.of("robot_id", "chunk_x", "chunk_y"),
             "robot_id", "chunk_x", "chunk_y", "cells", "updated_sim_time_ms");
+    private static final String INSERT_POSE = "INSERT INTO pose_estimate (robot_id, sim_time_ms, x_m, y_m, yaw_rad,"
+            + " var_x, var_y, var_yaw, cov_xy, cov_x_yaw, cov_y_yaw) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
     private static final String INSERT_COMMAND =
             "INSERT INTO engine_comments (robot_id, iteration, sim_time_ms, scenario, command) VALUES (?, ?, ?, ?, ?)";
 
@@ -150,11 +156,50 @@ public final class JdbcRobotTables
         for (Object[] mark : marks) {
             writes.add(MARK_REACHED, 3, (ps, p) -> bind(ps, p, mark));
         }
+        PoseEstimate pose = writtenPose;
+        if (pose != null) {
+            writes.add(INSERT_POSE, 11, (ps, p) -> bind(ps, p, poseRow(pose)));
+        }
+    }
+
+    private Object[] poseRow(PoseEstimate e) {
+        return new Object[] {robotId, e.simTimeMs(), e.xM(), e.yM(), e.yawRad(), e.varX(), e.varY(), e.varYaw(), e.covXY(),
+            e.covXYaw(), e.covYYaw()};
+    }
+
+    @Override
+    public Optional<PoseEstimate> newestPose() {
+        if (buffering() && writtenPose != null && writtenPoseIteration == transaction.iterationNumber()) {
+            return Optional.of(writtenPose);
+        }
+        return queryOne("newest pose estimate", "SELECT sim_time_ms, x_m, y_m, yaw_rad, var_x, var_y, var_yaw, cov_xy, cov_x_yaw,"
+                + " cov_y_yaw FROM pose_estimate WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1",
+                rs -> new PoseEstimate(rs.getLong(1), rs.getDouble(2), rs.getDouble(3), rs.getDouble(4), rs.getDouble(5),
+                        rs.getDouble(6), rs.getDouble(7), rs.getDouble(8), rs.getDouble(9), rs.getDouble(10)));
+    }
+
+    /** In an iteration, written with its commit (the iteration's later reads see it at once); else at once. */
+    @Override
+    public void writePose(PoseEstimate estimate) {
+        if (buffering()) {
+            writtenPose = estimate;
+            writtenPoseIteration = transaction.iterationNumber();
+            return;
+        }
+        update("writing the pose estimate", INSERT_POSE, poseRow(estimate));
+    }
+
+    @Override
+    public Optional<InitialPose> initialPose() {
+        return queryOne("initial pose", "SELECT x_m, y_m, yaw_rad FROM initial_pose WHERE robot_id = ?",
+                rs -> new InitialPose(rs.getDouble(1), rs.getDouble(2), rs.getDouble(3)));
     }
 
     private void forgetIteration() {
         pendingRequests.clear();
         pendingMarks.clear();
+        writtenPose = null;
+        writtenPoseIteration = -1;
         snapshot = null;
     }
 
@@ -507,7 +552,7 @@ public final class JdbcRobotTables
 
     /**
      * Bounds the engine's history of this robot: keeps the newest {@code keepRows} commands,
-     * answered sensor requests and rule failures (pending requests always stay).
+     * answered sensor requests, rule failures and pose estimates (pending requests always stay).
      *
      * @param keepRows how many rows of each to keep
      * @return the rows deleted
@@ -518,6 +563,7 @@ public final class JdbcRobotTables
             // Commands by iteration, so that the newest never goes; answered requests and rule failures are history.
             deleted += RobotRows.pruneOlderThanNewest(c, robotId, "engine_comments", "iteration", "", keepRows, 0);
             deleted += RobotRows.pruneOlderThanNewest(c, robotId, "rule_failures", "id", "", keepRows, 0);
+            deleted += RobotRows.pruneOlderThanNewest(c, robotId, "pose_estimate", "sim_time_ms", "", keepRows, 0);
             deleted += RobotRows.pruneOlderThanNewest(c, robotId, "sensor_requests", "id", " AND answered_sim_time_ms IS NOT NULL",
                     keepRows, 0);
         } catch (SQLException e) {

@@ -33,4 +33,9 @@ public interface MissionTables {
 
     /** @return the level a recharge stops at ({@code battery_recharged}), percent */
     OptionalDouble rechargeLevelPct();
+
+    /** @return where the robot stood when the mission started ({@code initial_pose}), if the mission says */
+    default Optional<InitialPose> initialPose() {
+        return Optional.empty();
+    }
 }

@@ -401,6 +401,17 @@ public final class JdbcRobotLink implements RobotLink {
                     }
                     wrote = true;
                 }
+                if (mission.start() != null && count(c, "initial_pose", robotId) == 0) {
+                    try (PreparedStatement ps = prepare(c,
+                            "INSERT INTO initial_pose (robot_id, x_m, y_m, yaw_rad) VALUES (?, ?, ?, ?)")) {
+                        ps.setInt(1, robotId);
+                        ps.setDouble(2, mission.start().xM());
+                        ps.setDouble(3, mission.start().yM());
+                        ps.setDouble(4, mission.start().yawRad());
+                        ps.executeUpdate();
+                    }
+                    wrote = true;
+                }
                 if (count(c, "battery_recharged", robotId) == 0) {
                     try (PreparedStatement ps = prepare(c,
                             "INSERT INTO battery_recharged (robot_id, level_pct) VALUES (?, ?)")) {

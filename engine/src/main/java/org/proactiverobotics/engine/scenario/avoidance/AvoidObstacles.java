@@ -15,8 +15,9 @@ import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.OccupancyMap;
-import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
@@ -42,7 +43,7 @@ public final class AvoidObstacles extends Rule {
 
     private transient DistanceScan scan;
     private transient Heading heading;
-    private transient GpsFix position;
+    private transient PoseEstimate position;
     private transient String suggestion;
 
     /** @return whether the reflex vetoed the last command it vetted */
@@ -59,7 +60,7 @@ public final class AvoidObstacles extends Rule {
         SensorReadings readings = ctx.service(SensorReadings.class);
         scan = readings.newestScan().orElse(null);
         heading = readings.newestHeading().orElse(null);
-        position = readings.newestGps().orElse(null);
+        position = ctx.findService(PoseEstimateTable.class).flatMap(PoseEstimateTable::newestPose).orElse(null);
     }
 
     /** Guard: distance readings and the heading are known (without a position, hits are not remembered). */
@@ -75,9 +76,6 @@ public final class AvoidObstacles extends Rule {
     @Override
     protected boolean conditions(RuleContext ctx) {
         BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
-        if (belief != null && position != null) {
-            belief.pose(ctx.iteration(), position.xM(), position.yM(), heading.yawRad());
-        }
         String intended = intended(ctx);
         if (Math.abs(heading.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
             suggestion = Steering.STOP;
@@ -92,7 +90,7 @@ public final class AvoidObstacles extends Rule {
         OccupancyMap map = position == null ? null
                 : ctx.findService(KnownMap.class).map(m -> m.current(ctx.iteration(), position.simTimeMs())).orElse(null);
         suggestion = reflex.vet(intended, scan, map, position == null ? 0.0 : position.xM(),
-                position == null ? 0.0 : position.yM(), heading.yawRad(), profile,
+                position == null ? 0.0 : position.yM(), position == null ? heading.yawRad() : position.yawRad(), profile,
                 Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM()));
         if (position == null) {
             reflex.forget(); // without a position the hits cannot be placed: only this scan counted

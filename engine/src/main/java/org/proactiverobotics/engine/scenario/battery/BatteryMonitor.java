@@ -10,7 +10,8 @@ import org.proactiverobotics.engine.navigation.Route;
 import org.proactiverobotics.engine.navigation.RoutePlanner;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.Checkpoint;
-import org.proactiverobotics.engine.tables.GpsFix;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.SensorReadings;
@@ -61,7 +62,7 @@ public final class BatteryMonitor extends Rule {
     /** The route to the last checkpoint planned with the way back, metres (-1: none planned since). */
     private double finishM = -1;
 
-    private transient GpsFix position;
+    private transient PoseEstimate position;
     private transient BatteryState battery;
     private transient Station station;
     private transient List<Checkpoint> checkpoints;
@@ -85,7 +86,7 @@ public final class BatteryMonitor extends Rule {
     @Override
     protected void acquireGuardData(RuleContext ctx) {
         SensorReadings readings = ctx.service(SensorReadings.class);
-        position = readings.newestGps().orElse(null);
+        position = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
         battery = readings.newestBattery().orElse(null);
         station = ctx.service(MissionTables.class).rechargeStation().orElse(null);
     }

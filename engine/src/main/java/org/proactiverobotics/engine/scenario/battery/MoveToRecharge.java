@@ -13,8 +13,8 @@ import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.DistanceScan;
-import org.proactiverobotics.engine.tables.GpsFix;
-import org.proactiverobotics.engine.tables.Heading;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.SensorReadings;
@@ -66,8 +66,7 @@ public final class MoveToRecharge extends Rule {
     /** When it arrived, simulated ms: it stays {@value #CHARGE_START_MS} ms, until the battery can say whether it charges. */
     private long arrivedMs;
 
-    private transient GpsFix position;
-    private transient Heading heading;
+    private transient PoseEstimate position;
     private transient BatteryState battery;
     private transient DistanceScan scan;
     private transient double targetPct;
@@ -93,8 +92,7 @@ public final class MoveToRecharge extends Rule {
     @Override
     protected void acquireGuardData(RuleContext ctx) {
         SensorReadings readings = ctx.service(SensorReadings.class);
-        position = readings.newestGps().orElse(null);
-        heading = readings.newestHeading().orElse(null);
+        position = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
         battery = readings.newestBattery().orElse(null);
         scan = readings.newestScan().orElse(null);
         targetPct = ctx.service(MissionTables.class).rechargeLevelPct().orElse(100.0);
@@ -103,7 +101,7 @@ public final class MoveToRecharge extends Rule {
     /** Guard: position, heading and battery are known. */
     @Override
     protected boolean activationGuards(RuleContext ctx) {
-        return position != null && heading != null && battery != null;
+        return position != null && battery != null;
     }
 
     /** Condition: the recharge is not finished yet. */
@@ -143,7 +141,7 @@ public final class MoveToRecharge extends Rule {
         }
         BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
         if (belief != null) {
-            belief.pose(ctx.iteration(), position.xM(), position.yM(), heading.yawRad());
+            belief.pose(ctx.iteration(), position.xM(), position.yM(), position.yawRad());
             if (route.planned()) {
                 belief.route(ctx.iteration(), scenario(), route.waypointsX(), route.waypointsY());
             }
@@ -151,13 +149,13 @@ public final class MoveToRecharge extends Rule {
         if (tripPlannedM < 0) {
             tripPlannedM = route.remainingM(position.xM(), position.yM(), xM, yM);
         }
-        behindSide = Steering.turnSide(position.xM(), position.yM(), heading.yawRad(), aimX, aimY, behindSide);
-        String command = Steering.goTo(position.xM(), position.yM(), heading.yawRad(), aimX, aimY, profile, behindSide);
+        behindSide = Steering.turnSide(position.xM(), position.yM(), position.yawRad(), aimX, aimY, behindSide);
+        String command = Steering.goTo(position.xM(), position.yM(), position.yawRad(), aimX, aimY, profile, behindSide);
         if (scan != null) {
-            if (Math.abs(heading.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
+            if (Math.abs(position.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
                 command = Steering.STOP; // the distance readings lag: never drive blind
             } else {
-                String veto = reflex.vet(command, scan, map, position.xM(), position.yM(), heading.yawRad(), profile,
+                String veto = reflex.vet(command, scan, map, position.xM(), position.yM(), position.yawRad(), profile,
                         Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM()));
                 command = veto == null ? command : veto;
             }

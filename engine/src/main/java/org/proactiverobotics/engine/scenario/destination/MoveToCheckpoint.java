@@ -10,14 +10,13 @@ import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.tables.Checkpoint;
-import org.proactiverobotics.engine.tables.GpsFix;
-import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMap;
-import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 
 /**
- * Steers toward one checkpoint from the GPS and inertial-unit readings, cloning itself until the
+ * Steers toward one checkpoint from the pose estimate (the Localisation scenario's), cloning itself until the
  * checkpoint is reached; then marks it reached and generates GetCheckpoint. It follows a route
  * planned on the occupancy map known so far (unknown cells free) and re-planned as scans reveal
  * walls ({@link RouteFollower}): straight at the checkpoint while the map shows the way clear, else
@@ -42,8 +41,7 @@ public final class MoveToCheckpoint extends Rule {
     /** The simulated time since which no plan has found a route, ms (-1: the last plan found one). */
     private long noRouteSinceMs = -1;
 
-    private transient GpsFix position;
-    private transient Heading heading;
+    private transient PoseEstimate position;
     private transient boolean reached;
     private transient boolean unreachable;
 
@@ -74,15 +72,13 @@ public final class MoveToCheckpoint extends Rule {
 
     @Override
     protected void acquireGuardData(RuleContext ctx) {
-        SensorReadings readings = ctx.service(SensorReadings.class);
-        position = readings.newestGps().orElse(null);
-        heading = readings.newestHeading().orElse(null);
+        position = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
     }
 
-    /** Guard: the robot's position and heading are known. */
+    /** Guard: the robot's pose is known (the localisation's estimate). */
     @Override
     protected boolean activationGuards(RuleContext ctx) {
-        return position != null && heading != null;
+        return position != null;
     }
 
     @Override
@@ -93,9 +89,6 @@ public final class MoveToCheckpoint extends Rule {
     @Override
     protected void actions(RuleContext ctx) {
         BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
-        if (belief != null) {
-            belief.pose(ctx.iteration(), position.xM(), position.yM(), heading.yawRad());
-        }
         reached = position.distanceTo(xM, yM) < radiusM * Checkpoint.REACHED_FRACTION;
         if (reached) {
             ctx.service(MissionTables.class).markReached(seq, position.simTimeMs());
@@ -126,8 +119,8 @@ public final class MoveToCheckpoint extends Rule {
             return;
         }
         noRouteSinceMs = -1;
-        behindSide = Steering.turnSide(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), behindSide);
-        ctx.suggest(Steering.goTo(position.xM(), position.yM(), heading.yawRad(), route.targetX(), route.targetY(), profile, behindSide));
+        behindSide = Steering.turnSide(position.xM(), position.yM(), position.yawRad(), route.targetX(), route.targetY(), behindSide);
+        ctx.suggest(Steering.goTo(position.xM(), position.yM(), position.yawRad(), route.targetX(), route.targetY(), profile, behindSide));
     }
 
     /** What the engine knows of why: no plan on its map found a way to the checkpoint for so long. */

@@ -7,18 +7,18 @@ import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.tables.DistanceScan;
-import org.proactiverobotics.engine.tables.GpsFix;
-import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MapChunk;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.OccupancyMapTable;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
  * Adds each new distance scan to the map: along every ray, the cells it crossed lose evidence of
  * a wall (unknown ones become free) and the cell where it hit (a reading shorter than
  * {@value #FREE_MARGIN} of the range below it) gains some ({@link OccupancyMap#hit}). The scan is placed at the
- * GPS and inertial-unit readings of the same moment (within {@value #SAME_MOMENT_MS} ms); a scan
+ * pose estimate of the same moment (within {@value #SAME_MOMENT_MS} ms); a scan
  * without them is skipped. Every chunk a scan changed is written in the same iteration (its
  * transaction), so the stored map is always the one the engine's last committed iteration knew:
  * a resumed engine reloads it and plans the same routes, step for step (writing chunks where only
@@ -53,8 +53,7 @@ public final class UpdateMap extends Rule {
     /** The map as stored, loaded on the first run after a start or a resume. */
     private transient OccupancyMap map;
     private transient DistanceScan scan;
-    private transient GpsFix position;
-    private transient Heading heading;
+    private transient PoseEstimate position;
 
     @Override
     public String scenario() {
@@ -75,17 +74,13 @@ public final class UpdateMap extends Rule {
 
     @Override
     protected void acquireConditionData(RuleContext ctx) {
-        SensorReadings readings = ctx.service(SensorReadings.class);
-        position = readings.newestGps().orElse(null);
-        heading = readings.newestHeading().orElse(null);
+        position = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
     }
 
     /** Condition: the robot's pose at the scan's moment is known. */
     @Override
     protected boolean conditions(RuleContext ctx) {
-        return position != null && heading != null
-                && Math.abs(position.simTimeMs() - scan.simTimeMs()) <= SAME_MOMENT_MS
-                && Math.abs(heading.simTimeMs() - scan.simTimeMs()) <= SAME_MOMENT_MS;
+        return position != null && Math.abs(position.simTimeMs() - scan.simTimeMs()) <= SAME_MOMENT_MS;
     }
 
     @Override
@@ -95,7 +90,7 @@ public final class UpdateMap extends Rule {
             map = OccupancyMap.of(table.readMap());
         }
         double radiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
-        addScan(map, position.xM(), position.yM(), heading.yawRad(), radiusM, scan);
+        addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan);
         lastScanMs = scan.simTimeMs();
         List<MapChunk> changed = map.takeChanged();
         if (!changed.isEmpty()) {
