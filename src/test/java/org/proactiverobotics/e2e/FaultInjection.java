@@ -10,6 +10,7 @@ import java.util.function.UnaryOperator;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.StrategyTable;
@@ -48,7 +49,8 @@ final class FaultInjection implements UnaryOperator<EngineTables> {
         };
         return new EngineTables(wrap(SensorReadings.class, t.readings()), wrap(SensorRequests.class, t.requests()),
                 wrap(MissionTables.class, t.mission()), wrap(StrategyTable.class, t.strategy()),
-                wrap(EngineComments.class, recorded), t.pruneHistory());
+                wrap(EngineComments.class, recorded), t.pruneHistory(),
+                wrap(PoseEstimateTable.class, t.poses()));
     }
 
     private <T> T wrap(Class<T> type, T target) {

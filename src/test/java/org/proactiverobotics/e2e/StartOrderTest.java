@@ -50,7 +50,7 @@ class StartOrderTest {
     @Test
     void theEnginesPhraseIsTheBuildersOrder() {
         assertThat(RobotEngine.startOrderPhrase()).isEqualTo(String.join(" → ", ORDER))
-                .isEqualTo("DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins → ObstacleAvoidance"
+                .isEqualTo("DataAcquisition → Localisation → Mapping → BatteryMonitor → ReachDestination → plug-ins → ObstacleAvoidance"
                         + " → FailSafe → DecisionMaking");
     }
 

@@ -57,7 +57,7 @@ class TableGarbageTest {
                         injected.add(iteration);
                     }
                 };
-                return new EngineTables(t.readings(), t.requests(), t.mission(), t.strategy(), comments, t.pruneHistory());
+                return new EngineTables(t.readings(), t.requests(), t.mission(), t.strategy(), comments, t.pruneHistory(), t.poses());
             };
             List<String> keptSpeeds = new CopyOnWriteArrayList<>();
             List<String> changedSpeeds = new CopyOnWriteArrayList<>();

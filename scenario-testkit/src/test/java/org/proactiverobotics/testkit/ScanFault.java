@@ -20,7 +20,7 @@ final class ScanFault implements SensorReadings {
     EngineTables wrap(EngineTables tables) {
         readings = tables.readings();
         return new EngineTables(this, tables.requests(), tables.mission(), tables.strategy(), tables.comments(),
-                tables.pruneHistory());
+                tables.pruneHistory(), tables.poses());
     }
 
     void on() {

@@ -35,7 +35,7 @@ class ScenarioKitTest {
         try (TestDatabase db = TestDatabases.open(kind);
              ScenarioKit kit = ScenarioKit.builder().scenario(new SpeedGovernorScenario()).database(db.dataSource()).start()) {
             assertThat(kit.scheduled()).as("started: its rule runs in the first step").containsExactly(
-                    "SpeedGovernor/Govern", "DecisionMaking/ReadRobotCommands");
+                    "Localisation/EstimatePose", "SpeedGovernor/Govern", "DecisionMaking/ReadRobotCommands");
             kit.robot().gps(0.0, -4.0).headingDeg(90).scan(CLEAR).battery(80);
             kit.step();
             assertThat(kit.suggestion(GOVERNOR)).isNull();

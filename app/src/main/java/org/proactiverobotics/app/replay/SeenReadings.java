@@ -36,7 +36,7 @@ public final class SeenReadings implements SensorReadings {
         SeenReadings seen = new SeenReadings(tables.readings());
         sink.accept(seen);
         return new EngineTables(seen, tables.requests(), tables.mission(), tables.strategy(), tables.comments(),
-                tables.pruneHistory());
+                tables.pruneHistory(), tables.poses());
     }
 
     @Override

@@ -15,6 +15,7 @@ import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Proxy;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.SensorRequests;
 import org.proactiverobotics.engine.tables.StrategyTable;
@@ -251,7 +252,8 @@ public final class LazyReads {
     static EngineTables countingReads(EngineTables t, LongAdder reads) {
         return new EngineTables(countingReads(SensorReadings.class, t.readings(), reads),
                 countingReads(SensorRequests.class, t.requests(), reads), countingReads(MissionTables.class, t.mission(), reads),
-                countingReads(StrategyTable.class, t.strategy(), reads), t.comments(), t.pruneHistory());
+                countingReads(StrategyTable.class, t.strategy(), reads), t.comments(), t.pruneHistory(),
+                countingReads(PoseEstimateTable.class, t.poses(), reads));
     }
 
     /** A proxy that counts the calls that return something (the reads) and passes every call on. */

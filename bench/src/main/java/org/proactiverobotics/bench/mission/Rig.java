@@ -112,7 +112,7 @@ final class Rig implements AutoCloseable {
         DirectLink link = new DirectLink();
         DirectEngineTables tables = link.engine(robotId);
         Laps laps = new Laps(tables);
-        EngineTables wired = new EngineTables(tables, tables, laps, tables, tables, tables::pruneHistory);
+        EngineTables wired = new EngineTables(tables, tables, laps, tables, tables, tables::pruneHistory, tables);
         RobotEngine engine = start(RobotEngine.builder().tables(wired, StateStore.none()), world, robotId, algorithm);
         Simulation sim = new Simulation(world);
         ProactiveController controller = new ProactiveController(sim, link, RobotConfig.defaults(robotId));

@@ -452,11 +452,6 @@ public final class RobotEngine {
         return base.mission() instanceof OccupancyMapTable map ? map : OccupancyMapTable.inMemory();
     }
 
-    /** The layer's pose-estimate rows when its mission tables have them, else an estimate kept in memory. */
-    private static PoseEstimateTable poseTable(EngineTables base) {
-        return base.mission() instanceof PoseEstimateTable poses ? poses : PoseEstimateTable.inMemory();
-    }
-
     /** Configures a {@link RobotEngine}; every setting but the tables has a default. */
     public static final class Builder {
         private int robotId = 1;
@@ -630,7 +625,7 @@ public final class RobotEngine {
                     .service(EngineComments.class, wired.comments())
                     .service(OccupancyMapTable.class, knownMap.table())
                     .service(KnownMap.class, knownMap)
-                    .service(PoseEstimateTable.class, poseTable(base))
+                    .service(PoseEstimateTable.class, wired.poses())
                     .service(DriveProfile.class, drive);
             freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {

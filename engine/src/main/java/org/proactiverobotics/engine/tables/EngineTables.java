@@ -14,9 +14,11 @@ import java.util.function.IntUnaryOperator;
  * @param strategy     the PriorityArray and time-outs
  * @param comments     where decided commands go
  * @param pruneHistory keeps the newest n rows of the engine's history; returns how many went
+ * @param poses        the pose estimate's rows
  */
 public record EngineTables(SensorReadings readings, SensorRequests requests, MissionTables mission,
-                           StrategyTable strategy, EngineComments comments, IntUnaryOperator pruneHistory) {
+                           StrategyTable strategy, EngineComments comments, IntUnaryOperator pruneHistory,
+                           PoseEstimateTable poses) {
 
     /** Checks that every part is there. */
     public EngineTables {
@@ -26,6 +28,24 @@ public record EngineTables(SensorReadings readings, SensorRequests requests, Mis
         Objects.requireNonNull(strategy, "strategy");
         Objects.requireNonNull(comments, "comments");
         Objects.requireNonNull(pruneHistory, "pruneHistory");
+        Objects.requireNonNull(poses, "poses");
+    }
+
+    /**
+     * The parts without a pose-estimate table of their own: the mission tables' when they are one
+     * (the database's rows), else an estimate kept in memory.
+     *
+     * @param readings     the newest sensor readings
+     * @param requests     the requests for fresh data
+     * @param mission      checkpoints, station, recharge level
+     * @param strategy     the PriorityArray and time-outs
+     * @param comments     where decided commands go
+     * @param pruneHistory keeps the newest n rows of the engine's history; returns how many went
+     */
+    public EngineTables(SensorReadings readings, SensorRequests requests, MissionTables mission,
+                        StrategyTable strategy, EngineComments comments, IntUnaryOperator pruneHistory) {
+        this(readings, requests, mission, strategy, comments, pruneHistory,
+                mission instanceof PoseEstimateTable p ? p : PoseEstimateTable.inMemory());
     }
 
     /** @return the engine side over the shared database */

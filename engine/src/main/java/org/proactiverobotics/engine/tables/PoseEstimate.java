@@ -4,6 +4,7 @@ package org.proactiverobotics.engine.tables;
  * The engine's estimate of the robot's pose ({@code pose_estimate}), kept by the localisation
  * scenario: what every scenario that needs the robot's position or heading reads, never the raw
  * GPS. The covariance is the estimate's uncertainty: its square roots are standard deviations.
+ * The heading is NaN while it is not known (a robot with a GPS fix and no inertial unit yet).
  *
  * @param simTimeMs simulated time of the newest reading it includes, milliseconds
  * @param xM        x, metres
@@ -28,6 +29,11 @@ public record PoseEstimate(long simTimeMs, double xM, double yM, double yawRad,
      */
     public static PoseEstimate exact(long simTimeMs, double xM, double yM, double yawRad) {
         return new PoseEstimate(simTimeMs, xM, yM, yawRad, 0, 0, 0, 0, 0, 0);
+    }
+
+    /** @return whether the heading is known (it is NaN until the inertial unit or odometry tell it) */
+    public boolean knowsHeading() {
+        return !Double.isNaN(yawRad);
     }
 
     /** @return the distance to a point, metres */

@@ -34,7 +34,7 @@ class RobotEngineTest {
         try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
             Schema.apply(db.dataSource());
             RobotEngine engine = RobotEngine.builder().database(db.dataSource()).plugins(ScenarioPlugins.of(new Alpha())).build();
-            assertThat(engine.scenarios()).containsExactly("DataAcquisition", "Mapping", "BatteryMonitor", "ReachDestination",
+            assertThat(engine.scenarios()).containsExactly("DataAcquisition", "Localisation", "Mapping", "BatteryMonitor", "ReachDestination",
                     "Alpha", "ObstacleAvoidance", "FailSafe", "DecisionMaking");
             engine.startFresh();
             assertThat(engine.slots()).containsExactly(Map.entry("ReachDestination", 0), Map.entry("BatteryMonitor", 1),
@@ -52,7 +52,7 @@ class RobotEngineTest {
                     .plugins(ScenarioPlugins.of(new Alpha())).build();
             assertThat(engine.scenarios()).isEqualTo(RobotEngine.startOrder(List.of("Alpha")));
         }
-        assertThat(RobotEngine.startOrderPhrase()).isEqualTo(RobotEngine.ORDER_TEXT).isEqualTo("DataAcquisition → Mapping"
+        assertThat(RobotEngine.startOrderPhrase()).isEqualTo(RobotEngine.ORDER_TEXT).isEqualTo("DataAcquisition → Localisation → Mapping"
                 + " → BatteryMonitor → ReachDestination → plug-ins → ObstacleAvoidance → FailSafe → DecisionMaking");
     }
 

@@ -10,6 +10,8 @@ import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.GpsFix;
 import org.proactiverobotics.engine.tables.Heading;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
@@ -24,7 +26,8 @@ import org.proactiverobotics.engine.tables.StrategyTable;
  * statements would); every other call goes through. Which scenario calls is read off the stack.
  * Give {@link #wrap} to the kit's {@code faults}.
  */
-final class FaultyTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments {
+final class FaultyTables implements SensorReadings, SensorRequests, MissionTables, StrategyTable, EngineComments,
+        PoseEstimateTable {
 
     private static final StackWalker STACK = StackWalker.getInstance(StackWalker.Option.RETAIN_CLASS_REFERENCE);
 
@@ -34,7 +37,7 @@ final class FaultyTables implements SensorReadings, SensorRequests, MissionTable
     /** @return the tables the engine's rules see: these, calling through to the given ones */
     EngineTables wrap(EngineTables wrapped) {
         this.tables = wrapped;
-        return EngineTables.of(this, wrapped.pruneHistory());
+        return new EngineTables(this, this, this, this, this, wrapped.pruneHistory(), this);
     }
 
     /** Every call from this scenario's package throws from now on. */
@@ -59,6 +62,18 @@ final class FaultyTables implements SensorReadings, SensorRequests, MissionTable
         if (p != null && STACK.walk(frames -> frames.anyMatch(f -> f.getDeclaringClass().getPackageName().equals(p)))) {
             throw new IllegalStateException("injected fault: the database refuses " + p);
         }
+    }
+
+    @Override
+    public Optional<PoseEstimate> newestPose() {
+        check();
+        return tables.poses().newestPose();
+    }
+
+    @Override
+    public void writePose(PoseEstimate estimate) {
+        check();
+        tables.poses().writePose(estimate);
     }
 
     @Override

@@ -17,7 +17,7 @@ import org.proactiverobotics.testkit.ScenarioKit;
 class RobotScenariosTest {
 
     static final List<String> PAPER_ORDER = List.of(
-            "DataAcquisition", "BatteryMonitor", "ReachDestination", "ObstacleAvoidance", "DecisionMaking");
+            "DataAcquisition", "Localisation", "BatteryMonitor", "ReachDestination", "ObstacleAvoidance", "DecisionMaking");
 
     private static ScenarioKit.Builder allFive() {
         // named in another order: the kit starts them in the standard one

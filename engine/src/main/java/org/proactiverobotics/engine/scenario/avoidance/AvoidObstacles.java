@@ -90,7 +90,7 @@ public final class AvoidObstacles extends Rule {
         OccupancyMap map = position == null ? null
                 : ctx.findService(KnownMap.class).map(m -> m.current(ctx.iteration(), position.simTimeMs())).orElse(null);
         suggestion = reflex.vet(intended, scan, map, position == null ? 0.0 : position.xM(),
-                position == null ? 0.0 : position.yM(), position == null ? heading.yawRad() : position.yawRad(), profile,
+                position == null ? 0.0 : position.yM(), position == null || !position.knowsHeading() ? heading.yawRad() : position.yawRad(), profile,
                 Clearance.of(profile, period.observe(scan.simTimeMs()), scan.rangeM()));
         if (position == null) {
             reflex.forget(); // without a position the hits cannot be placed: only this scan counted

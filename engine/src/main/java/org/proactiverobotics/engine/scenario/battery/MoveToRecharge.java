@@ -98,10 +98,10 @@ public final class MoveToRecharge extends Rule {
         targetPct = ctx.service(MissionTables.class).rechargeLevelPct().orElse(100.0);
     }
 
-    /** Guard: position, heading and battery are known. */
+    /** Guard: the pose (heading included) and the battery are known. */
     @Override
     protected boolean activationGuards(RuleContext ctx) {
-        return position != null && battery != null;
+        return position != null && position.knowsHeading() && battery != null;
     }
 
     /** Condition: the recharge is not finished yet. */

@@ -78,7 +78,7 @@ public final class MoveToCheckpoint extends Rule {
     /** Guard: the robot's pose is known (the localisation's estimate). */
     @Override
     protected boolean activationGuards(RuleContext ctx) {
-        return position != null;
+        return position != null && position.knowsHeading();
     }
 
     @Override

@@ -51,7 +51,6 @@ public final class EstimatePose extends Rule {
     private transient GpsFix gps;
     private transient Heading heading;
     private transient WheelOdometry odometry;
-    private transient DistanceScan scan;
     private transient ScanMatcher matcher;
 
     @Override
@@ -65,7 +64,6 @@ public final class EstimatePose extends Rule {
         gps = readings.newestGps().orElse(null);
         heading = readings.newestHeading().orElse(null);
         odometry = readings.newestOdometry().orElse(null);
-        scan = readings.newestScan().orElse(null);
     }
 
     /** Guard: a reading the estimate does not include yet. */
@@ -73,12 +71,6 @@ public final class EstimatePose extends Rule {
     protected boolean activationGuards(RuleContext ctx) {
         return (gps != null && gps.simTimeMs() > gpsMs) || (heading != null && heading.simTimeMs() > headingMs)
                 || (odometry != null && odometry.simTimeMs() > odometryMs);
-    }
-
-    /** Condition: the estimate can start (or has): an initial pose, or a fix and a heading. */
-    @Override
-    protected boolean conditions(RuleContext ctx) {
-        return filter.started() || heading != null;
     }
 
     @Override
@@ -105,7 +97,9 @@ public final class EstimatePose extends Rule {
             gpsMs = gps.simTimeMs();
         }
         newest = Math.max(newest, Math.max(Math.max(odometryMs, headingMs), gpsMs));
-        if (scan != null && scan.simTimeMs() > scanMs && newest - gpsMs >= GPS_LOST_MS) {
+        // the scan is read only without a fix: with one, a scan that cannot be read costs the estimate nothing
+        DistanceScan scan = newest - gpsMs >= GPS_LOST_MS ? ctx.service(SensorReadings.class).newestScan().orElse(null) : null;
+        if (scan != null && scan.simTimeMs() > scanMs) {
             scanMs = scan.simTimeMs();
             if (matcher == null) {
                 matcher = new ScanMatcher();
@@ -148,16 +142,16 @@ public final class EstimatePose extends Rule {
         return false;
     }
 
-    /** No odometry: the newest fix and heading are the estimate (nothing to predict a motion from). */
+    /** No odometry: the newest fix and heading are the estimate (nothing to predict a motion from); no heading yet, NaN. */
     private void writeReadingsAsTheyAre(RuleContext ctx) {
-        if (gps == null || heading == null) {
+        if (gps == null) {
             return;
         }
         gpsMs = gps.simTimeMs();
-        headingMs = heading.simTimeMs();
+        headingMs = heading == null ? -1 : heading.simTimeMs();
         double v = GPS_SIGMA_M * GPS_SIGMA_M;
-        write(ctx, new PoseEstimate(Math.max(gpsMs, headingMs), gps.xM(), gps.yM(), heading.yawRad(),
-                v, v, YAW_SIGMA_RAD * YAW_SIGMA_RAD, 0, 0, 0));
+        write(ctx, new PoseEstimate(Math.max(gpsMs, headingMs), gps.xM(), gps.yM(), heading == null ? Double.NaN : heading.yawRad(),
+                v, v, heading == null ? Double.NaN : YAW_SIGMA_RAD * YAW_SIGMA_RAD, 0, 0, 0));
     }
 
     private void write(RuleContext ctx, PoseEstimate estimate) {

@@ -80,7 +80,7 @@ public final class UpdateMap extends Rule {
     /** Condition: the robot's pose at the scan's moment is known. */
     @Override
     protected boolean conditions(RuleContext ctx) {
-        return position != null && Math.abs(position.simTimeMs() - scan.simTimeMs()) <= SAME_MOMENT_MS;
+        return position != null && position.knowsHeading() && Math.abs(position.simTimeMs() - scan.simTimeMs()) <= SAME_MOMENT_MS;
     }
 
     @Override
