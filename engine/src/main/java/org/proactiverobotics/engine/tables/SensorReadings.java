@@ -22,4 +22,12 @@ public interface SensorReadings {
 
     /** @return the simulated time of the newest reading of a sensor, or -1 when there is none */
     long newestSimTimeMs(Sensor sensor);
+
+    /**
+     * @return the robot's clock as the engine sees it: the newest time of a GPS, inertial-unit or
+     *         odometry reading (indoors, with no GPS, the others keep it), simulated ms; -1 before any
+     */
+    default long robotClockMs() {
+        return Math.max(newestSimTimeMs(Sensor.GPS), Math.max(newestSimTimeMs(Sensor.IU), newestSimTimeMs(Sensor.ODOMETRY)));
+    }
 }

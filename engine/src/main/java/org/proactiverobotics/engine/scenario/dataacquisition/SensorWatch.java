@@ -10,7 +10,7 @@ import org.proactiverobotics.engine.tables.SensorRequests;
 /**
  * What GetGPS, GetDS, GetIU, GetBattery and GetOdometry share: when no request for the sensor is pending
  * (guard) and its newest reading is older than the interval (condition), request a new one.
- * The engine's "now" is the newest GPS time, the robot's own clock as the engine sees it.
+ * The engine's "now" is the robot's clock as the engine sees it ({@link SensorReadings#robotClockMs()}).
  * Under the lazy algorithm the readings are not even looked at while a request is pending.
  */
 public abstract class SensorWatch extends Rule {
@@ -52,7 +52,7 @@ public abstract class SensorWatch extends Rule {
         }
         SensorReadings readings = ctx.service(SensorReadings.class);
         newestMs = readings.newestSimTimeMs(sensor());
-        nowMs = sensor() == Sensor.GPS ? newestMs : readings.newestSimTimeMs(Sensor.GPS);
+        nowMs = readings.robotClockMs();
     }
 
     @Override

@@ -9,7 +9,6 @@ import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.SharedMemory;
 import org.proactiverobotics.engine.Suggestion;
-import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.proactiverobotics.engine.tables.StrategyTable;
 
@@ -22,8 +21,8 @@ import org.proactiverobotics.engine.tables.StrategyTable;
  * <p>Time-outs, as in ROS twist_mux: each slot has one ({@link StrategyTable.Entry#timeoutMs()},
  * simulated milliseconds). A suggestion is live while its age is at most the time-out, and is
  * cleared once it is not; a scenario that enters a new one each iteration is never affected.
- * Age is measured on the robot's clock as the engine sees it (the newest GPS time, as the data
- * acquisition does) from the decision that first saw it, i.e. the iteration it was entered in.
+ * Age is measured on the robot's clock as the engine sees it ({@link SensorReadings#robotClockMs()}, as the
+ * data acquisition does) from the decision that first saw it, i.e. the iteration it was entered in.
  * Time-out 0, the default, keeps the paper's behaviour: the slot is cleared after each decision,
  * so a suggestion lives one iteration and a scenario that falls silent is never obeyed on a
  * stale word.
@@ -75,7 +74,7 @@ public final class ReadRobotCommands extends Rule {
         if (!anyTimeout) {
             return;
         }
-        nowMs = ctx.service(SensorReadings.class).newestSimTimeMs(Sensor.GPS);
+        nowMs = ctx.service(SensorReadings.class).robotClockMs();
         for (int slot = 0; slot < commands.size(); slot++) {
             Suggestion s = commands.get(slot);
             if (s != null && s.iteration() != seenIteration[slot]) {

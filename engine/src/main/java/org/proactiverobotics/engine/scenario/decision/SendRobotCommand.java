@@ -6,7 +6,6 @@ import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.RuleFailure;
 import org.proactiverobotics.engine.tables.EngineComments;
-import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
@@ -46,7 +45,7 @@ public final class SendRobotCommand extends Rule {
 
     @Override
     protected void actions(RuleContext ctx) {
-        long simTimeMs = Math.max(0, ctx.service(SensorReadings.class).newestSimTimeMs(Sensor.GPS));
+        long simTimeMs = Math.max(0, ctx.service(SensorReadings.class).robotClockMs());
         if (failedThisIteration(ctx, winner)) {
             ctx.service(EngineComments.class).send(ctx.iteration(), simTimeMs, DecisionMakingScenario.NAME, STOP);
         } else {

@@ -16,7 +16,6 @@ import org.proactiverobotics.engine.ScenarioRegistry;
 import org.proactiverobotics.engine.StartUp;
 import org.proactiverobotics.engine.Suggestion;
 import org.proactiverobotics.engine.tables.EngineComments;
-import org.proactiverobotics.engine.tables.Sensor;
 import org.proactiverobotics.engine.tables.SensorReadings;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -244,7 +243,7 @@ public final class WatchFailures extends Rule {
     /** Without a slot, a gone scenario may be the decision itself: tell the robot directly. */
     private static void sendStop(RuleContext ctx, String scenario) {
         try {
-            long simTimeMs = Math.max(0, ctx.service(SensorReadings.class).newestSimTimeMs(Sensor.GPS));
+            long simTimeMs = Math.max(0, ctx.service(SensorReadings.class).robotClockMs());
             ctx.service(EngineComments.class).send(ctx.iteration(), simTimeMs, FailSafeScenario.NAME, STOP);
         } catch (RuntimeException e) {
             LOG.warn("fail-safe: could not send STOP for gone scenario {}: {}", scenario, e.getMessage());
