@@ -103,7 +103,7 @@ class NavigationGatesTest {
         return new Result(world, noise, r, plannedM, failure);
     }
 
-    private static void delete(Path dir) {
+    static void delete(Path dir) {
         try (Stream<Path> paths = Files.walk(dir)) {
             for (Path p : paths.sorted(Comparator.reverseOrder()).toList()) {
                 Files.delete(p);

@@ -19,13 +19,19 @@ final class PoseFilter {
     static final double WHEEL_SIGMA_M = 0.0005;
     /** The odometry's scale wanders by this much per metre travelled (tyres wear, the floor changes). */
     static final double SCALE_WANDER_PER_M = 0.002;
-    /** How far the scale is trusted at the start: wheels slip a few percent. */
+    /**
+     * The odometry's scale at the start: rubber wheels on a hard indoor floor lose about 2 % of what
+     * they roll (docs/sensors.md's standard configuration, what a calibration such as UMBmark
+     * measures on a real robot); the filter learns the robot's own from the GPS or the scan.
+     */
+    static final double SCALE_PRIOR = 0.98;
+    /** How far that scale is trusted at the start: wheels slip a few percent. */
     static final double SCALE_SIGMA = 0.03;
 
     private double x;
     private double y;
     private double yaw;
-    private double scale = 1.0;
+    private double scale = SCALE_PRIOR;
     /** The covariance, row by row (4 x 4). */
     private double[] p = new double[16];
     private boolean started;
@@ -65,7 +71,7 @@ final class PoseFilter {
         x = xM;
         y = yM;
         yaw = wrap(yawRad);
-        scale = 1.0;
+        scale = SCALE_PRIOR;
         p = new double[16];
         p[0] = sigmaM * sigmaM;
         p[5] = sigmaM * sigmaM;
