@@ -110,8 +110,8 @@ class StartOrderTest {
             assertThat(disagreement(flat(wrong))).as(wrong).isNotNull();
         }
         List<String> rights = List.of(
-                "Start order: DataAcquisition → Mapping → BatteryMonitor → ReachDestination → plug-ins → ObstacleAvoidance"
-                        + " → FailSafe → DecisionMaking (the plug-ins in the order given).",
+                "Start order: DataAcquisition → Localisation → Mapping → BatteryMonitor → ReachDestination → plug-ins"
+                        + " → ObstacleAvoidance → FailSafe → DecisionMaking (the plug-ins in the order given).",
                 "Whatever your scenario suggests, ObstacleAvoidance vets it (it starts after the plug-ins) and drives the"
                         + " nearest arc that keeps clear instead.",
                 "`--scenarios` in the order given, then ObstacleAvoidance (the collision monitor vets the command).",
