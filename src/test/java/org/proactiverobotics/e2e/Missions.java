@@ -102,6 +102,17 @@ final class Missions {
         return run(options, sim -> { }, UnaryOperator.identity());
     }
 
+    /** The run of any world on a new database of a kind, with sensor noise. */
+    static Run run(WorldSpec world, DatabaseKind kind, org.proactiverobotics.app.mission.NoiseLevel noise) {
+        try (TestDatabase db = TestDatabases.open(kind)) {
+            MissionOptions options = new MissionOptions(world, db.jdbcUrl(), db.user(), db.password(), "safety-first", 1)
+                    .withNoise(noise);
+            return run(options, sim -> { }, UnaryOperator.identity());
+        } catch (java.sql.SQLException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
     /** The run of any world on a database. */
     static Run run(WorldSpec world, TestDatabase db, String strategy) {
         MissionOptions options = new MissionOptions(world, db.jdbcUrl(), db.user(), db.password(), strategy, 1);
