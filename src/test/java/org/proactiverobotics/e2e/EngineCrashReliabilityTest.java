@@ -13,7 +13,9 @@ import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Tag;
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.proactiverobotics.app.mission.NoiseLevel;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
@@ -33,11 +35,17 @@ class EngineCrashReliabilityTest {
     @TempDir
     Path tmp;
 
-    @Test
-    void theEngineKilledTenTimesResumesEachTimeAndTheRunIsTheUninterruptedOne() throws Exception {
+    /**
+     * Without noise, and indoors, where the pose is the localiser's estimate from odometry and the
+     * scan: a resumed engine must restore that estimate (its filter is the rule's saved state) to
+     * drive on as the uninterrupted run did.
+     */
+    @ParameterizedTest(name = "noise {0}")
+    @ValueSource(strings = {"none", "indoor"})
+    void theEngineKilledTenTimesResumesEachTimeAndTheRunIsTheUninterruptedOne(String noise) throws Exception {
         long seed = Long.getLong("proactive.reliability.seed", 7);
         int kills = Integer.getInteger("proactive.engineKills", 10);
-        Uninterrupted reference = Uninterrupted.of(WORLD);
+        Uninterrupted reference = Uninterrupted.of(WORLD, NoiseLevel.of(noise));
         long totalSteps = reference.report().controlSteps();
         Random random = new Random(seed);
         long start = System.nanoTime();
@@ -48,6 +56,7 @@ class EngineCrashReliabilityTest {
             Process engine = deployment.start("engine", engineOptions, engineLogs.get(0));
             Map<String, String> robotOptions = new LinkedHashMap<>();
             robotOptions.put("--out", tmp.resolve("out").toString());
+            robotOptions.put("--noise", noise);
             robotOptions.put("--log-every", "250");
             Path robotLog = tmp.resolve("robot.log");
             Process robot = deployment.start("robot", robotOptions, robotLog);

@@ -74,6 +74,13 @@ final class Missions {
         return run(world, db, strategy, onStep, UnaryOperator.identity());
     }
 
+    /** The run of a bundled world on a database, with sensor noise. */
+    static Run run(String world, TestDatabase db, String strategy, org.proactiverobotics.app.mission.NoiseLevel noise) {
+        MissionOptions options = new MissionOptions(WorldFiles.bundled(world), db.jdbcUrl(), db.user(), db.password(),
+                strategy, 1).withNoise(noise);
+        return run(options, sim -> { }, UnaryOperator.identity());
+    }
+
     /** A run whose engine reads and writes through {@code tables} (a fault injected, a recorder). */
     static Run run(String world, TestDatabase db, String strategy, Consumer<Simulation> onStep,
                    UnaryOperator<EngineTables> tables) {

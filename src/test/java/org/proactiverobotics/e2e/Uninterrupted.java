@@ -9,12 +9,13 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.NoiseLevel;
 import org.proactiverobotics.db.DatabaseKind;
 import org.proactiverobotics.db.TestDatabase;
 import org.proactiverobotics.db.TestDatabases;
 
 /**
- * The uninterrupted one-process run of a bundled world (safety-first, embedded H2), with the
+ * The uninterrupted one-process run of a bundled world (safety-first, embedded H2, a noise level), with the
  * checkpoints rows the engine left: what the interrupted two-process runs are compared with.
  */
 record Uninterrupted(MissionReport report, List<Clocks.CheckpointRow> checkpoints) {
@@ -23,9 +24,14 @@ record Uninterrupted(MissionReport report, List<Clocks.CheckpointRow> checkpoint
 
     /** Runs once per test JVM and world. */
     static Uninterrupted of(String world) {
-        return RUNS.computeIfAbsent(world, w -> {
+        return of(world, NoiseLevel.NONE);
+    }
+
+    /** Runs once per test JVM, world and noise level. */
+    static Uninterrupted of(String world, NoiseLevel noise) {
+        return RUNS.computeIfAbsent(world + "/" + noise.label(), key -> {
             try (TestDatabase db = TestDatabases.open(DatabaseKind.H2)) {
-                MissionReport report = Missions.run(w, db, "safety-first", sim -> { }).report();
+                MissionReport report = Missions.run(world, db, "safety-first", noise).report();
                 List<Clocks.CheckpointRow> rows = new ArrayList<>();
                 try (Connection c = db.dataSource().getConnection(); Statement s = c.createStatement();
                      ResultSet rs = s.executeQuery("SELECT seq, reached, reached_sim_time_ms FROM checkpoints "
