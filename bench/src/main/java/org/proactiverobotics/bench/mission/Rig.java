@@ -18,6 +18,7 @@ import org.proactiverobotics.app.link.DirectLink;
 import org.proactiverobotics.db.RobotRows;
 import org.proactiverobotics.db.Schema;
 import org.proactiverobotics.engine.Algorithm;
+import org.proactiverobotics.engine.IterationListener;
 import org.proactiverobotics.engine.StateStore;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.robot.IterationBatch;
@@ -26,12 +27,14 @@ import org.proactiverobotics.engine.robot.Strategy;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.InitialPose;
 import org.proactiverobotics.engine.tables.Station;
 import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.robot.RobotConfig;
 import org.proactiverobotics.robot.link.JdbcRobotLink;
 import org.proactiverobotics.robot.link.RobotPool;
 import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.SensorNoise;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.WorldSpec;
 
@@ -109,12 +112,21 @@ final class Rig implements AutoCloseable {
 
     /** A robot over an in-process link of its own (no database, the engine's state not saved). */
     static Rig direct(WorldSpec world, int robotId, Algorithm algorithm) {
+        return direct(world, robotId, algorithm, SensorNoise.NONE, null);
+    }
+
+    /** As above, its sensors erring as the noise says, each iteration and rule told to a listener (or null). */
+    static Rig direct(WorldSpec world, int robotId, Algorithm algorithm, SensorNoise noise, IterationListener listener) {
         DirectLink link = new DirectLink();
         DirectEngineTables tables = link.engine(robotId);
         Laps laps = new Laps(tables);
         EngineTables wired = new EngineTables(tables, tables, laps, tables, tables, tables::pruneHistory, tables);
-        RobotEngine engine = start(RobotEngine.builder().tables(wired, StateStore.none()), world, robotId, algorithm);
-        Simulation sim = new Simulation(world);
+        RobotEngine.Builder builder = RobotEngine.builder().tables(wired, StateStore.none());
+        if (listener != null) {
+            builder.listener(listener);
+        }
+        RobotEngine engine = start(builder, world, robotId, algorithm);
+        Simulation sim = new Simulation(world, noise);
         ProactiveController controller = new ProactiveController(sim, link, RobotConfig.defaults(robotId));
         return new Rig(robotId, world, sim, controller, engine, null, laps, null);
     }
@@ -323,6 +335,11 @@ final class Rig implements AutoCloseable {
         @Override
         public OptionalDouble rechargeLevelPct() {
             return target.rechargeLevelPct();
+        }
+
+        @Override
+        public Optional<InitialPose> initialPose() {
+            return target.initialPose();
         }
     }
 }
