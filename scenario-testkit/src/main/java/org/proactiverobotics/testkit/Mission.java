@@ -2,9 +2,10 @@ package org.proactiverobotics.testkit;
 
 /**
  * The mission rows the robot seeds before it starts (from its world file, in a real run): the
- * checkpoints to reach in order, and the recharge station. Each row is written at once.
+ * checkpoints to reach in order, the recharge station, and where the robot starts (the initial
+ * pose a robot without GPS localises from). Each row is written at once.
  *
- * <p>Units: metres, percent (0 to 100).
+ * <p>Units: metres, degrees, percent (0 to 100).
  */
 public final class Mission {
 
@@ -62,6 +63,22 @@ public final class Mission {
         db.update("INSERT INTO recharge_station (robot_id, x_m, y_m, radius_m) VALUES (?, ?, ?, ?)",
                 robotId, xM, yM, STATION_RADIUS_M);
         db.update("INSERT INTO battery_recharged (robot_id, level_pct) VALUES (?, ?)", robotId, rechargeToPct);
+        return this;
+    }
+
+    /**
+     * Sets where the robot starts ({@code initial_pose}): the pose the Localisation scenario starts
+     * its estimate from, as an operator gives a robot without GPS its initial pose.
+     *
+     * @param xM     where, metres
+     * @param yM     where, metres
+     * @param yawDeg the heading, degrees: 0 faces +x, counter-clockwise positive
+     * @return this mission
+     */
+    public Mission initialPose(double xM, double yM, double yawDeg) {
+        db.update("DELETE FROM initial_pose WHERE robot_id = ?", robotId);
+        db.update("INSERT INTO initial_pose (robot_id, x_m, y_m, yaw_rad) VALUES (?, ?, ?, ?)", robotId, xM, yM,
+                Math.toRadians(yawDeg));
         return this;
     }
 }

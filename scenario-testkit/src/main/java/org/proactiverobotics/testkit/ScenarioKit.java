@@ -7,6 +7,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.Set;
 import java.util.function.UnaryOperator;
 import javax.sql.DataSource;
@@ -24,6 +25,7 @@ import org.proactiverobotics.engine.scenario.decision.DecisionMakingScenario;
 import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
 import org.proactiverobotics.engine.scenario.localisation.LocalisationScenario;
 import org.proactiverobotics.engine.tables.EngineTables;
+import org.proactiverobotics.engine.tables.PoseEstimate;
 
 /**
  * Tests a proactive scenario alone, or a few together: the real engine, wired as a mission
@@ -261,6 +263,14 @@ public final class ScenarioKit implements AutoCloseable {
     public List<Integer> reachedCheckpoints() {
         return db.query("SELECT seq FROM checkpoints WHERE robot_id = ? AND reached = TRUE ORDER BY seq",
                 rs -> rs.getInt(1), ROBOT_ID);
+    }
+
+    /**
+     * @return the engine's newest pose estimate ({@code pose_estimate}, the Localisation scenario's):
+     *         the fix and heading as scripted when the robot reports no odometry, else the filter's
+     */
+    public Optional<PoseEstimate> pose() {
+        return engine.tables().poses().newestPose();
     }
 
     /** @return the memory the scenarios share: CommandArray, PriorityArray, named values */
