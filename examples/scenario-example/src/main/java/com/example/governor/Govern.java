@@ -10,17 +10,17 @@ import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.DistanceScan;
-import org.proactiverobotics.engine.tables.GpsFix;
-import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMap;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
  * When an obstacle is within {@link #slowWithinM} ahead (±60°), suggests heading for the next
  * checkpoint at no more than {@link #slowSpeedMps}, along the route the engine's navigation
  * library plans on the map known so far (straight at the checkpoint would drive into the
- * obstacle). Lazy evaluation at work: the guard needs only the distance scan; the GPS, heading,
+ * obstacle). Lazy evaluation at work: the guard needs only the distance scan; the pose estimate,
  * checkpoints and map are read only when it holds.
  */
 public final class Govern extends Rule {
@@ -34,8 +34,7 @@ public final class Govern extends Rule {
 
     // Acquired each iteration: transient, never saved.
     private transient double nearestM;
-    private transient GpsFix gps;
-    private transient Heading heading;
+    private transient PoseEstimate pose;
     private transient Checkpoint target;
 
     @Override
@@ -57,30 +56,28 @@ public final class Govern extends Rule {
 
     @Override
     protected void acquireConditionData(RuleContext ctx) {
-        SensorReadings readings = ctx.service(SensorReadings.class);
-        gps = readings.newestGps().orElse(null);
-        heading = readings.newestHeading().orElse(null);
+        pose = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
         target = ctx.service(MissionTables.class).checkpoints().stream().filter(c -> !c.reached()).findFirst().orElse(null);
     }
 
     /** Condition: the robot knows where it is, which way it faces, and where to go. */
     @Override
     protected boolean conditions(RuleContext ctx) {
-        return gps != null && heading != null && target != null;
+        return pose != null && pose.knowsHeading() && target != null;
     }
 
     @Override
     protected void actions(RuleContext ctx) {
         DriveProfile slow = new DriveProfile(slowSpeedMps, ctx.service(DriveProfile.class).axleWidthM());
-        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), gps.simTimeMs());
+        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), pose.simTimeMs());
         double aimX = target.xM();
         double aimY = target.yM();
-        if (route.step(map, gps.xM(), gps.yM(), target.xM(), target.yM(), 0.5 * target.radiusM(),
+        if (route.step(map, pose.xM(), pose.yM(), target.xM(), target.yM(), 0.5 * target.radiusM(),
                 slow.axleWidthM() / 2) == RouteFollower.Status.TARGET) {
             aimX = route.targetX();
             aimY = route.targetY();
         }
-        ctx.suggest(Steering.goTo(gps.xM(), gps.yM(), heading.yawRad(), aimX, aimY, slow));
+        ctx.suggest(Steering.goTo(pose.xM(), pose.yM(), pose.yawRad(), aimX, aimY, slow));
     }
 
     /** Always runs: the rule clones itself to watch again in the next iteration. */

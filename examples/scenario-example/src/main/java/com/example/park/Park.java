@@ -7,10 +7,9 @@ import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.tables.Checkpoint;
-import org.proactiverobotics.engine.tables.GpsFix;
-import org.proactiverobotics.engine.tables.Heading;
 import org.proactiverobotics.engine.tables.MissionTables;
-import org.proactiverobotics.engine.tables.SensorReadings;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.Station;
 
 /**
@@ -21,8 +20,7 @@ public final class Park extends Rule {
 
     private transient boolean allReached;
     private transient Station station;
-    private transient GpsFix gps;
-    private transient Heading heading;
+    private transient PoseEstimate pose;
 
     @Override
     public String scenario() {
@@ -42,23 +40,21 @@ public final class Park extends Rule {
 
     @Override
     protected void acquireConditionData(RuleContext ctx) {
-        SensorReadings readings = ctx.service(SensorReadings.class);
         station = ctx.service(MissionTables.class).rechargeStation().orElse(null);
-        gps = readings.newestGps().orElse(null);
-        heading = readings.newestHeading().orElse(null);
+        pose = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
     }
 
     @Override
     protected boolean conditions(RuleContext ctx) {
-        return station != null && gps != null && heading != null;
+        return station != null && pose != null && pose.knowsHeading();
     }
 
     @Override
     protected void actions(RuleContext ctx) {
-        if (gps.distanceTo(station.xM(), station.yM()) <= station.radiusM() / 2) {
+        if (pose.distanceTo(station.xM(), station.yM()) <= station.radiusM() / 2) {
             ctx.suggest(Steering.STOP);
         } else {
-            ctx.suggest(Steering.goTo(gps.xM(), gps.yM(), heading.yawRad(), station.xM(), station.yM(),
+            ctx.suggest(Steering.goTo(pose.xM(), pose.yM(), pose.yawRad(), station.xM(), station.yM(),
                     ctx.service(DriveProfile.class)));
         }
     }
