@@ -1,17 +1,19 @@
 package org.proactiverobotics.engine.scenario.localisation;
 
-import org.ejml.data.DMatrix3x3;
-import org.ejml.dense.fixed.CommonOps_DDF3;
+import org.ejml.data.DMatrixRMaj;
+import org.ejml.dense.row.factory.DecompositionFactory_DDRM;
+import org.ejml.interfaces.decomposition.EigenDecomposition_F64;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
 /**
  * Matches one distance scan against the engine's own occupancy map: point-to-line ICP. Each ray
  * that hit something ends at a point; the point is paired with the occupied cells nearest to it,
- * the line through those cells (their principal direction) is the wall it hit, and Gauss-Newton
- * moves the pose until the points lie on their walls. The result is the pose with its covariance:
- * along a wall the scan says nothing (a corridor), and the covariance says so, so the filter keeps
- * odometry's word there. Chosen over a correlative search because the scan has a dozen rays, each
+ * the line through those cells (their principal direction) is the wall it hit (a point past the
+ * cells' end, or near fewer than {@value #MIN_WALL_CELLS} cells, is left unpaired), and Gauss-Newton
+ * moves the pose until the points lie on their walls, in the directions the walls pin only. The
+ * result is the pose with its covariance: along a wall the scan says nothing (a corridor), and the
+ * covariance says so, so the filter keeps odometry's word there. Chosen over a correlative search because the scan has a dozen rays, each
  * iteration must cost microseconds, and odometry predicts the pose to a few centimetres: a local
  * solver is enough, and its curvature gives the covariance. Scratch arrays are reused, nothing is
  * allocated per match.
@@ -32,15 +34,29 @@ final class ScanMatcher {
     static final double MAX_SHIFT_M = 0.2;
     /** Nor one that turns it further than this, radians. */
     static final double MAX_TURN_RAD = 0.15;
-    /** What the matcher assumes of a direction the scan does not constrain, 1/m^2: keeps the normal matrix invertible. */
-    static final double PRIOR = 1e-3;
+    /** A wall is at least this many occupied cells around the one nearest a point: fewer give no line. */
+    static final int MIN_WALL_CELLS = 3;
+    /**
+     * A direction of the pose the scan constrains less than this (an eigenvalue of the normal
+     * matrix: about the number of rays that pin it) is left as predicted, with no information:
+     * along a corridor the walls' cells, tilted a little by the grid, would otherwise pull the pose
+     * a few millimetres the same way at every scan, and that adds up (degeneracy-aware ICP).
+     */
+    static final double MIN_INFORMATION = 3.0;
+    /** The heading is scaled by this lever arm to weigh it with the position, metres (about a ray's reach). */
+    static final double LEVER_M = 1.0;
+    /** The standard deviation given to a direction the scan does not constrain, metres (or radians times the lever). */
+    static final double UNCONSTRAINED_M = 10.0;
 
     private static final int REACH_CELLS = (int) Math.ceil(PAIR_M / OccupancyMap.CELL_M);
 
     private double[] localX = new double[16];
     private double[] localY = new double[16];
-    private final DMatrix3x3 normal = new DMatrix3x3();
-    private final DMatrix3x3 inverse = new DMatrix3x3();
+    private final DMatrixRMaj normal = new DMatrixRMaj(3, 3);
+    private final EigenDecomposition_F64<DMatrixRMaj> eigen = DecompositionFactory_DDRM.eig(3, true, true);
+    /** The step's and the covariance's scaled form (x, y, heading times the lever). */
+    private final double[] step = new double[3];
+    private final double[] scaledCovariance = new double[9];
 
     /** The matched pose and its covariance (x, y, heading; 3 x 3 row by row), after {@link #match} returned true. */
     double xM;
@@ -84,10 +100,10 @@ final class ScanMatcher {
         double y = y0;
         double yaw = yaw0;
         double sumSquares = 0;
-        for (int step = 0; step < STEPS; step++) {
+        for (int iteration = 0; iteration < STEPS; iteration++) {
             double c = Math.cos(yaw);
             double s = Math.sin(yaw);
-            double h00 = PRIOR, h01 = 0, h02 = 0, h11 = PRIOR, h12 = 0, h22 = PRIOR;
+            double h00 = 0, h01 = 0, h02 = 0, h11 = 0, h12 = 0, h22 = 0;
             double b0 = 0, b1 = 0, b2 = 0;
             pairs = 0;
             sumSquares = 0;
@@ -103,27 +119,20 @@ final class ScanMatcher {
                 double r = nx * (px - line[0]) + ny * (py - line[1]);
                 double j0 = nx;
                 double j1 = ny;
-                double j2 = nx * -(py - y) + ny * (px - x);
+                double j2 = (nx * -(py - y) + ny * (px - x)) / LEVER_M;
                 h00 += j0 * j0; h01 += j0 * j1; h02 += j0 * j2;
                 h11 += j1 * j1; h12 += j1 * j2; h22 += j2 * j2;
                 b0 += j0 * r; b1 += j1 * r; b2 += j2 * r;
                 sumSquares += r * r;
                 pairs++;
             }
-            if (pairs < MIN_PAIRS) {
+            if (pairs < MIN_PAIRS || !solve(h00, h01, h02, h11, h12, h22, b0, b1, b2)) {
                 return false;
             }
-            normal.setTo(h00, h01, h02, h01, h11, h12, h02, h12, h22);
-            if (!CommonOps_DDF3.invert(normal, inverse)) {
-                return false;
-            }
-            double dx = -(inverse.a11 * b0 + inverse.a12 * b1 + inverse.a13 * b2);
-            double dy = -(inverse.a21 * b0 + inverse.a22 * b1 + inverse.a23 * b2);
-            double dt = -(inverse.a31 * b0 + inverse.a32 * b1 + inverse.a33 * b2);
-            x += dx;
-            y += dy;
-            yaw += dt;
-            if (Math.abs(dx) < 1e-4 && Math.abs(dy) < 1e-4 && Math.abs(dt) < 1e-4) {
+            x += step[0];
+            y += step[1];
+            yaw += step[2] / LEVER_M;
+            if (Math.abs(step[0]) < 1e-4 && Math.abs(step[1]) < 1e-4 && Math.abs(step[2]) < 1e-4) {
                 break;
             }
         }
@@ -134,11 +143,55 @@ final class ScanMatcher {
         xM = x;
         yM = y;
         yawRad = PoseFilter.wrap(yaw);
-        double v = SIGMA_M * SIGMA_M;
-        covariance[0] = v * inverse.a11; covariance[1] = v * inverse.a12; covariance[2] = v * inverse.a13;
-        covariance[3] = v * inverse.a21; covariance[4] = v * inverse.a22; covariance[5] = v * inverse.a23;
-        covariance[6] = v * inverse.a31; covariance[7] = v * inverse.a32; covariance[8] = v * inverse.a33;
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 3; j++) {
+                covariance[i * 3 + j] = scaledCovariance[i * 3 + j] / (i == 2 ? LEVER_M : 1) / (j == 2 ? LEVER_M : 1);
+            }
+        }
         return true;
+    }
+
+    /**
+     * The Gauss-Newton step in the directions the scan constrains, nothing in the others, and the
+     * covariance to match (both scaled: the heading times {@link #LEVER_M}).
+     *
+     * @return false when the scan constrains no direction at all
+     */
+    private boolean solve(double h00, double h01, double h02, double h11, double h12, double h22,
+                          double b0, double b1, double b2) {
+        normal.set(0, 0, h00); normal.set(0, 1, h01); normal.set(0, 2, h02);
+        normal.set(1, 0, h01); normal.set(1, 1, h11); normal.set(1, 2, h12);
+        normal.set(2, 0, h02); normal.set(2, 1, h12); normal.set(2, 2, h22);
+        if (!eigen.decompose(normal)) {
+            return false;
+        }
+        java.util.Arrays.fill(step, 0);
+        java.util.Arrays.fill(scaledCovariance, 0);
+        boolean constrained = false;
+        for (int e = 0; e < 3; e++) {
+            double lambda = eigen.getEigenvalue(e).real;
+            DMatrixRMaj v = eigen.getEigenVector(e);
+            double v0 = v.get(0);
+            double v1 = v.get(1);
+            double v2 = v.get(2);
+            double variance;
+            if (lambda >= MIN_INFORMATION) {
+                double along = -(v0 * b0 + v1 * b1 + v2 * b2) / lambda;
+                step[0] += along * v0;
+                step[1] += along * v1;
+                step[2] += along * v2;
+                variance = SIGMA_M * SIGMA_M / lambda;
+                constrained = true;
+            } else {
+                variance = UNCONSTRAINED_M * UNCONSTRAINED_M;
+            }
+            for (int i = 0; i < 3; i++) {
+                for (int j = 0; j < 3; j++) {
+                    scaledCovariance[i * 3 + j] += variance * v.get(i) * v.get(j);
+                }
+            }
+        }
+        return constrained;
     }
 
     private final double[] line = new double[4];
@@ -188,33 +241,28 @@ final class ScanMatcher {
                 }
             }
         }
+        if (count < MIN_WALL_CELLS) {
+            // a lone cell or two (a wall's end as far as the map knows it, a speck) gives no line; pairing the
+            // point with it pulls the pose back along the way it came, step after step
+            return null;
+        }
         double mx = sx / count;
         double my = sy / count;
         double vxx = sxx / count - mx * mx;
         double vxy = sxy / count - mx * my;
         double vyy = syy / count - my * my;
-        double nx;
-        double ny;
-        if (count < 3 || vxx + vyy < 1e-12) {
-            // a lone cell: the point's direction from it is the normal (point to point)
-            double ex = px - OccupancyMap.centre(bestI);
-            double ey = py - OccupancyMap.centre(bestJ);
-            double len = Math.hypot(ex, ey);
-            if (len < 1e-9) {
-                nx = 1;
-                ny = 0;
-            } else {
-                nx = ex / len;
-                ny = ey / len;
-            }
-            mx = OccupancyMap.centre(bestI);
-            my = OccupancyMap.centre(bestJ);
-        } else {
-            // the wall runs along the spread's major axis; its normal is the minor one
-            double angle = 0.5 * Math.atan2(2 * vxy, vxx - vyy);
-            nx = -Math.sin(angle);
-            ny = Math.cos(angle);
+        // the wall runs along the spread's major axis; its normal is the minor one
+        double angle = 0.5 * Math.atan2(2 * vxy, vxx - vyy);
+        double ux = Math.cos(angle);
+        double uy = Math.sin(angle);
+        // a point beyond the cells' end along the wall may lie on a part of it the map has not seen, or on another
+        // wall: not paired (half the window's reach past the centre)
+        double along = (px - mx) * ux + (py - my) * uy;
+        if (Math.abs(along) > 2.5 * OccupancyMap.CELL_M) {
+            return null;
         }
+        double nx = -uy;
+        double ny = ux;
         line[0] = mx;
         line[1] = my;
         line[2] = nx;
