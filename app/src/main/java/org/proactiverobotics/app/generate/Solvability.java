@@ -24,7 +24,15 @@ public record Solvability(boolean solvable, double lengthM, int recharges, Strin
      * @return the verdict
      */
     public static Solvability of(WorldSpec world) {
-        GridPlanner planner = new GridPlanner(world, CLEARANCE_M);
+        return of(world, new GridPlanner(world, CLEARANCE_M));
+    }
+
+    /**
+     * @param world   the world
+     * @param planner the world's planner, built with {@link #CLEARANCE_M} (one already built for the world, to reuse)
+     * @return the verdict
+     */
+    public static Solvability of(WorldSpec world, GridPlanner planner) {
         WorldSpec.Battery b = world.battery();
         WorldSpec.RechargeStation st = world.rechargeStation();
         List<double[]> stops = new ArrayList<>();

@@ -47,7 +47,8 @@ public final class BoxCover {
             double x1 = grid.originX() + (r.i1() + 1) * c;
             double y0 = grid.originY() + r.j0() * c;
             double y1 = grid.originY() + (r.j1() + 1) * c;
-            boxes.add(WorldSpec.Obstacle.box(round((x0 + x1) / 2), round((y0 + y1) / 2), round(x1 - x0), round(y1 - y0), 0.0));
+            boxes.add(WorldSpec.Obstacle.box(OccupancyGrid.micrometres((x0 + x1) / 2), OccupancyGrid.micrometres((y0 + y1) / 2),
+                    OccupancyGrid.micrometres(x1 - x0), OccupancyGrid.micrometres(y1 - y0), 0.0));
         }
         return boxes;
     }
@@ -106,10 +107,5 @@ public final class BoxCover {
             }
         }
         return out;
-    }
-
-    /** Micrometres: a box's edges land on the cell lines without float dust in the world file. */
-    private static double round(double v) {
-        return Math.round(v * 1e6) / 1e6;
     }
 }

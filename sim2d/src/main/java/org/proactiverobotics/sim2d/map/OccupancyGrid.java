@@ -63,24 +63,29 @@ public final class OccupancyGrid {
         return originY;
     }
 
-    /** @return the map's extent along x, metres */
+    /** @return the map's extent along x, metres (to the micrometre, as the boxes' edges) */
     public double widthM() {
-        return columns * cellM;
+        return micrometres(columns * cellM);
     }
 
-    /** @return the map's extent along y, metres */
+    /** @return the map's extent along y, metres (to the micrometre) */
     public double heightM() {
-        return rows * cellM;
+        return micrometres(rows * cellM);
     }
 
-    /** @return x of the map's centre, metres */
+    /** @return x of the map's centre, metres (to the micrometre) */
     public double centreX() {
-        return originX + widthM() / 2.0;
+        return micrometres(originX + columns * cellM / 2.0);
     }
 
-    /** @return y of the map's centre, metres */
+    /** @return y of the map's centre, metres (to the micrometre) */
     public double centreY() {
-        return originY + heightM() / 2.0;
+        return micrometres(originY + rows * cellM / 2.0);
+    }
+
+    /** Rounds to micrometres: 12 cells of 0.4 m are 4.8 m in a world file, not 4.800000000000001. */
+    static double micrometres(double v) {
+        return Math.round(v * 1e6) / 1e6;
     }
 
     /** @return whether cell (i, j) is blocked; cells off the map count as blocked */
