@@ -92,7 +92,7 @@ public final class ImportMapCommand implements Callable<Integer> {
         String text;
         try {
             imported = MapImport.of(map, cellM == null ? MapFiles.DEFAULT_CELL_M : cellM, robotRadiusM, checkpoints, seed);
-            text = referenceMap ? referencing(imported.world()) : WorldJson.of(imported.world());
+            text = referenceMap ? referencing(imported.world()) : imported.json();
         } catch (MapException e) {
             err.println(e.getMessage());
             err.flush();

@@ -25,12 +25,13 @@ import org.proactiverobotics.sim2d.map.OccupancyGrid;
  * what the user should hear about the map (its size, free floor, warnings).
  *
  * @param world    the world, valid and solvable
+ * @param json     its world file's text, boxes inline
  * @param grid     the map's cells as read
  * @param plan     the solvability check's plan
  * @param rooms    how many rooms the floor fell apart into for placing checkpoints
  * @param warnings one sentence each, possibly none
  */
-public record MapImport(WorldSpec world, OccupancyGrid grid, Solvability plan, int rooms, List<String> warnings) {
+public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvability plan, int rooms, List<String> warnings) {
 
     /** A floor whose side is below this is small for a building, metres. */
     static final double SMALL_SIDE_M = 3.0;
@@ -104,14 +105,15 @@ public record MapImport(WorldSpec world, OccupancyGrid grid, Solvability plan, i
         double limit = Math.ceil((plan.lengthM() / (robot.maxSpeedMps() / 3) + chargeS + 60) / 10) * 10;
         WorldSpec world = new WorldSpec(name, charged.timeStepMs(), limit, charged.seed(), arena, start, boxes, cps,
                 charged.checkpointRadiusM(), charged.rechargeStation(), battery);
+        String json = WorldJson.of(world);
         try {
-            world = WorldFiles.parse(WorldJson.of(world), name); // the world file's own checks, as generate does
+            world = WorldFiles.parse(json, name); // the world file's own checks, as generate does
         } catch (WorldValidationException e) {
             throw new IllegalStateException("an imported world failed its own checks: " + e.problems(), e);
         }
         List<String> warnings = new ArrayList<>(reading.notes());
         warnings.addAll(warnings(grid));
-        return new MapImport(world, grid, plan, p.rooms(), warnings);
+        return new MapImport(world, json, grid, plan, p.rooms(), warnings);
     }
 
     /** @return the free floor, square metres */

@@ -96,14 +96,14 @@ final class MissionPlacer {
         int start = startRoom[random.nextInt(startRoom.length)];
         double heading = 90.0 * random.nextInt(4);
 
-        int[] fromStart = geodesic(onFloor, new int[] {start});
+        int[] fromStart = geodesic(onFloor, new int[] {start}, steps(STATION_MAX_M)); // only as far as the station may be
         int station = station(startRoom, fromStart, onFloor, random);
         List<Integer> placed = new ArrayList<>(List.of(start, station));
         boolean[] used = new boolean[rooms.size()];
         used[rooms.indexOf(startRoom)] = true;
         List<double[]> points = new ArrayList<>();
         for (int k = 0; k < checkpoints; k++) {
-            int[] geo = geodesic(onFloor, placed.stream().mapToInt(Integer::intValue).toArray());
+            int[] geo = geodesic(onFloor, placed.stream().mapToInt(Integer::intValue).toArray(), Integer.MAX_VALUE);
             int pick = farRoom(rooms, used, geo, random);
             int[] cells;
             if (pick >= 0) {
@@ -249,8 +249,11 @@ final class MissionPlacer {
         return rooms;
     }
 
-    /** @return each cell's distance along the floor (4 neighbours, steps) from the nearest source; -1 where unreachable */
-    private int[] geodesic(boolean[] onFloor, int[] sources) {
+    /**
+     * @return each cell's distance along the floor (4 neighbours, steps) from the nearest source, up to {@code limit}
+     *         steps; -1 where unreachable or farther
+     */
+    private int[] geodesic(boolean[] onFloor, int[] sources, int limit) {
         int[] d = new int[w * h];
         Arrays.fill(d, -1);
         int head = 0;
@@ -263,6 +266,9 @@ final class MissionPlacer {
         }
         while (head < tail) {
             int c = queue[head++];
+            if (d[c] >= limit) {
+                continue;
+            }
             int i = c % w;
             for (int k = 0; k < 4; k++) {
                 int n = neighbour(c, i, k);
@@ -285,7 +291,7 @@ final class MissionPlacer {
         }
         int best = -1;
         for (int c = 0; c < onFloor.length; c++) {
-            if (onFloor[c] && fromStart[c] <= hi && (best < 0 || fromStart[c] > fromStart[best])) {
+            if (onFloor[c] && fromStart[c] >= 0 && fromStart[c] <= hi && (best < 0 || fromStart[c] > fromStart[best])) {
                 best = c;
             }
         }
