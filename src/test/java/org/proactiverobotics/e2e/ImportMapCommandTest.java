@@ -80,7 +80,11 @@ class ImportMapCommandTest extends CommandLineTest {
         assertThat(w.name()).isEqualTo("rooms");
         assertThat(w.arena()).isEqualTo(WorldSpec.Arena.rectangle(7.0, 5.5, 1.5, 4.25));
         assertThat(w.checkpoints()).hasSize(2);
-        assertThat(Solvability.of(w).solvable()).isTrue();
+        Solvability plan = Solvability.of(w);
+        assertThat(plan.solvable()).isTrue();
+        // one charge lasts three times the planned tour: the robot explores a floor it does not know
+        assertThat(plan.recharges()).isZero();
+        assertThat(w.battery().drainPerMeter() * 3 * plan.lengthM()).isLessThanOrEqualTo(100.0);
         // the start in one room, both checkpoints in the other (the door closes the rooms apart)
         double wallX = -2.0 + 69.5 * 0.05;
         assertThat(w.checkpoints()).allMatch(c -> Math.signum(c.x() - wallX) != Math.signum(w.robot().x() - wallX)
@@ -223,12 +227,15 @@ class ImportMapCommandTest extends CommandLineTest {
         assertThat(err.toString()).contains("rooms.pgm: not a map this reads: give a ROS map_server YAML (.yaml) or a Moving AI map (.map)");
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--robot-radius", "0.5")).isEqualTo(2);
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--checkpoints", "0")).isEqualTo(2);
+        assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--name", "my floor")).isEqualTo(2);
+        assertThat(err.toString()).contains("--name must be letters, digits, '-' or '_': my floor");
         assertThat(world).doesNotExist();
         Files.writeString(world, "{}");
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString())).isEqualTo(2);
         assertThat(err.toString()).contains("exists: give --force to overwrite it");
         assertThat(Files.readString(world)).isEqualTo("{}");
-        assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--force")).isZero();
+        assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--force", "--name", "floor-2")).isZero();
+        assertThat(WorldFiles.load(world).name()).isEqualTo("floor-2");
     }
 
     @Test

@@ -62,6 +62,10 @@ public final class ImportMapCommand implements Callable<Integer> {
             description = "The seed of the mission's draws: the same map and seed give the same world. Default: ${DEFAULT-VALUE}.")
     private long seed;
 
+    @Option(names = "--name", paramLabel = "NAME",
+            description = "The world's name (letters, digits, - and _). Default: the map file's name without its extension.")
+    private String name;
+
     @Option(names = "--cell-m", paramLabel = "M",
             description = "Metres a cell of a Moving AI map (default 0.5); a map_server YAML gives its own resolution.")
     private Double cellM;
@@ -91,7 +95,7 @@ public final class ImportMapCommand implements Callable<Integer> {
         MapImport imported;
         String text;
         try {
-            imported = MapImport.of(map, cellM == null ? MapFiles.DEFAULT_CELL_M : cellM, robotRadiusM, checkpoints, seed);
+            imported = MapImport.of(map, cellM == null ? MapFiles.DEFAULT_CELL_M : cellM, robotRadiusM, checkpoints, seed, name);
             text = referenceMap ? referencing(imported.world()) : imported.json();
         } catch (MapException e) {
             err.println(e.getMessage());
@@ -163,6 +167,9 @@ public final class ImportMapCommand implements Callable<Integer> {
         }
         if (checkpoints < 1 || checkpoints > 20) {
             return "--checkpoints must be from 1 to 20: " + checkpoints;
+        }
+        if (name != null && !name.matches("[A-Za-z0-9_-]+")) {
+            return "--name must be letters, digits, '-' or '_': " + name;
         }
         if (cellM != null && !(cellM > 0 && cellM <= 100)) {
             return "--cell-m must be above 0 and at most 100 (metres a cell): " + cellM;

@@ -37,8 +37,12 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
     static final double SMALL_SIDE_M = 3.0;
     /** A floor whose side is above this is large for a building, metres. */
     static final double LARGE_SIDE_M = 300.0;
-    /** A tour longer than this, metres, gets a battery that drains slower than the default, so that one charge lasts it. */
-    private static final double ONE_CHARGE_M = 80.0;
+    /**
+     * How many times the planned tour one charge must last: the robot does not know the floor and drives up to
+     * about three times the planned path (what the time limit allows, at a third of top speed); with the
+     * default battery, a 46 m tour on the office of docs/maps.md ran 137 m, stopped to recharge and ran out of time.
+     */
+    private static final double EXPLORATION = 3.0;
 
     /** Keeps an unmodifiable copy of the warnings. */
     public MapImport {
@@ -51,10 +55,11 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
      * @param robotRadiusM the robot's radius, metres
      * @param checkpoints  how many checkpoints
      * @param seed         the seed of the mission's draws
+     * @param name         the world's name (letters, digits, {@code -}, {@code _}), or null for the map file's
      * @return the world and what to say about it
      * @throws MapException when the map cannot be read or holds no mission (naming the file)
      */
-    public static MapImport of(Path mapFile, double cellM, double robotRadiusM, int checkpoints, long seed) {
+    public static MapImport of(Path mapFile, double cellM, double robotRadiusM, int checkpoints, long seed, String name) {
         MapReading reading = MapFiles.read(mapFile, cellM);
         OccupancyGrid grid = reading.grid();
         List<WorldSpec.Obstacle> boxes = BoxCover.boxes(grid);
@@ -62,8 +67,8 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
         WorldSpec.Robot robot = new WorldSpec.Robot(grid.centreX(), grid.centreY(), 0.0, robotRadiusM,
                 WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M,
                 WorldGenerator.sensorAnglesDeg(robotRadiusM));
-        String name = nameOf(mapFile);
-        WorldSpec floor = new WorldSpec(name, WorldSpec.DEFAULT_TIME_STEP_MS, WorldSpec.DEFAULT_MAX_SIM_TIME_S, 0, arena,
+        String worldName = name != null ? name : nameOf(mapFile);
+        WorldSpec floor = new WorldSpec(worldName, WorldSpec.DEFAULT_TIME_STEP_MS, WorldSpec.DEFAULT_MAX_SIM_TIME_S, 0, arena,
                 robot, boxes, List.of(), WorldSpec.DEFAULT_CHECKPOINT_RADIUS_M, new WorldSpec.RechargeStation(0, 0, 0.35),
                 WorldSpec.Battery.DEFAULT);
         GridPlanner planner = new GridPlanner(floor, Solvability.CLEARANCE_M);
@@ -78,7 +83,7 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
         WorldSpec.Robot start = new WorldSpec.Robot(p.startX(), p.startY(), p.headingDeg(), robot.radiusM(), robot.maxSpeedMps(),
                 robot.sensorRangeM(), robot.sensorAnglesDeg());
         long noiseSeed = new SplittableRandom(seed).split().nextLong(1, 1_000_000);
-        WorldSpec draft = new WorldSpec(name, floor.timeStepMs(), floor.maxSimTimeS(), noiseSeed, arena, start, boxes, cps,
+        WorldSpec draft = new WorldSpec(worldName, floor.timeStepMs(), floor.maxSimTimeS(), noiseSeed, arena, start, boxes, cps,
                 floor.checkpointRadiusM(), new WorldSpec.RechargeStation(p.stationX(), p.stationY(), 0.35), WorldSpec.Battery.DEFAULT);
         // every leg and every way back to the station the check will ask for, found on both cores at once
         List<double[]> asked = new ArrayList<>();
@@ -91,10 +96,11 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
             py = c.y();
         }
         planner.prefetch(asked);
-        // the tour's length on the planner, then a battery one charge of which lasts it on a large floor
+        // the tour's length on the planner, then a battery one charge of which lasts it three times over
         double tour = tourM(planner, draft);
-        WorldSpec.Battery battery = tour <= ONE_CHARGE_M ? WorldSpec.Battery.DEFAULT
-                : new WorldSpec.Battery(100.0, Math.floor(ONE_CHARGE_M / tour * 1000) / 1000, 100.0, 10.0);
+        double drive = EXPLORATION * tour;
+        WorldSpec.Battery battery = drive <= 100.0 ? WorldSpec.Battery.DEFAULT
+                : new WorldSpec.Battery(100.0, Math.floor(100.0 / drive * 1000) / 1000, 100.0, 10.0);
         WorldSpec charged = draft.withBattery(battery);
         Solvability plan = Solvability.of(charged, planner); // the same floor and footprint: its legs are known
         if (!plan.solvable()) {
@@ -103,11 +109,11 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
         }
         double chargeS = plan.recharges() * battery.rechargeTo() / battery.rechargeRatePerS();
         double limit = Math.ceil((plan.lengthM() / (robot.maxSpeedMps() / 3) + chargeS + 60) / 10) * 10;
-        WorldSpec world = new WorldSpec(name, charged.timeStepMs(), limit, charged.seed(), arena, start, boxes, cps,
+        WorldSpec world = new WorldSpec(worldName, charged.timeStepMs(), limit, charged.seed(), arena, start, boxes, cps,
                 charged.checkpointRadiusM(), charged.rechargeStation(), battery);
         String json = WorldJson.of(world);
         try {
-            world = WorldFiles.parse(json, name); // the world file's own checks, as generate does
+            world = WorldFiles.parse(json, worldName); // the world file's own checks, as generate does
         } catch (WorldValidationException e) {
             throw new IllegalStateException("an imported world failed its own checks: " + e.problems(), e);
         }
