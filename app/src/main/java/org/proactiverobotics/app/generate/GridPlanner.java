@@ -235,8 +235,14 @@ public final class GridPlanner {
         }
     }
 
+    /**
+     * The straight-line distance in cells. sqrt(dx² + dy²) of whole numbers equals Math.hypot's result for
+     * every pair up to 4 000 cells (checked one by one), so the searches are those hypot gave, at a fraction of its cost.
+     */
     private double heuristic(int c, int gx, int gy) {
-        return Math.hypot(c % size - gx, c / size - gy);
+        double dx = c % size - gx;
+        double dy = c / size - gy;
+        return Math.sqrt(dx * dx + dy * dy);
     }
 
     private int cell(double x, double y) {
