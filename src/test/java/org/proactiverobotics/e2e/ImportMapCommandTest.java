@@ -164,9 +164,10 @@ class ImportMapCommandTest extends CommandLineTest {
     void referenceMapNamesTheMapAndReadsBackToTheSameWorld() throws Exception {
         Path maps = Files.createDirectories(tmp.resolve("maps"));
         Path map = twoRooms(maps);
-        Path inline = tmp.resolve("worlds").resolve("inline.json");
+        Path inline = tmp.resolve("inline").resolve("inline.json");
         Path named = tmp.resolve("worlds").resolve("named.json");
         assertThat(run("import-map", "--map", map.toString(), "--out", inline.toString())).isZero();
+        // the world's folder does not exist yet: the map's relative name is read back all the same
         assertThat(run("import-map", "--map", map.toString(), "--out", named.toString(), "--reference-map")).as(err.toString())
                 .isZero();
         JsonObject json = JsonParser.parseString(Files.readString(named)).getAsJsonObject();

@@ -223,7 +223,8 @@ final class WorldParser {
         }
         Path file;
         try {
-            file = (baseDir == null ? Path.of("") : baseDir).resolve(f.getAsString());
+            // normalised: "../maps/x.yaml" must not need the world's folder to exist before the world is written
+            file = (baseDir == null ? Path.of("") : baseDir).resolve(f.getAsString()).normalize();
         } catch (InvalidPathException e) {
             problems.add("map.file: not a file name: " + f.getAsString());
             return null;
