@@ -91,7 +91,9 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
         double py = start.y();
         for (WorldSpec.Checkpoint c : cps) {
             asked.add(new double[] {px, py, c.x(), c.y()});
-            asked.add(new double[] {c.x(), c.y(), p.stationX(), p.stationY()});
+            if (c != cps.get(cps.size() - 1)) {
+                asked.add(new double[] {c.x(), c.y(), p.stationX(), p.stationY()});
+            }
             px = c.x();
             py = c.y();
         }
