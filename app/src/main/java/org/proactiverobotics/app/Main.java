@@ -19,6 +19,7 @@ import picocli.CommandLine.Command;
                 RunCommand.class,
                 SweepCommand.class,
                 GenerateCommand.class,
+                ImportMapCommand.class,
                 WorldsCommand.class,
                 EngineCommand.class,
                 RobotCommand.class,

@@ -42,10 +42,15 @@ public final class ValidateCommand implements Callable<Integer> {
         return 0;
     }
 
-    /** @return e.g. {@code reference-arena: valid (3 obstacles, 4 checkpoints, arena radius 5.0 m)} */
+    /**
+     * @return e.g. {@code reference-arena: valid (3 obstacles, 4 checkpoints, arena radius 5.0 m)}, or for a
+     *         rectangle {@code ... arena 56.0 x 60.0 m centred on (12.0, -3.5))}
+     */
     static String summary(WorldSpec w) {
-        return String.format(Locale.ROOT, "%s: valid (%s, %s, arena radius %s m)", w.name(),
-                Plural.of(w.obstacles().size(), "obstacle"), Plural.of(w.checkpoints().size(), "checkpoint"),
-                w.arena().radiusM());
+        WorldSpec.Arena a = w.arena();
+        String arena = a.isCircle() ? String.format(Locale.ROOT, "arena radius %s m", a.radiusM())
+                : String.format(Locale.ROOT, "arena %s x %s m centred on (%s, %s)", a.widthM(), a.heightM(), a.x(), a.y());
+        return String.format(Locale.ROOT, "%s: valid (%s, %s, %s)", w.name(),
+                Plural.of(w.obstacles().size(), "obstacle"), Plural.of(w.checkpoints().size(), "checkpoint"), arena);
     }
 }

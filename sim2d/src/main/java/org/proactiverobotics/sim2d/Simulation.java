@@ -23,7 +23,8 @@ import org.dyn4j.world.result.DetectResult;
 import org.dyn4j.world.result.RaycastResult;
 
 /**
- * A headless, deterministic dyn4j world built from a {@link WorldSpec}: the arena wall, static obstacles,
+ * A headless, deterministic dyn4j world built from a {@link WorldSpec}: the arena wall (a ring of boxes round a
+ * circle, or four round a rectangle), static obstacles,
  * a differential-drive robot, its sensors and battery, and the ground truth.
  * <p>
  * Each {@link #step()} advances exactly {@code timeStepMs}: the wheel speeds become the body's linear and
@@ -92,7 +93,7 @@ public final class Simulation {
         boolean fast = r.maxSpeedMps() * dt > r.radiusM() / 2.0;
         settings.setContinuousDetectionMode(fast ? ContinuousDetectionMode.ALL : ContinuousDetectionMode.NONE);
 
-        this.wallBody = createWall(spec.arena().radiusM());
+        this.wallBody = spec.arena().isCircle() ? createWall(spec.arena().radiusM()) : createRectangleWall(spec.arena());
         world.addBody(wallBody);
         if (!spec.obstacles().isEmpty()) {
             world.addBody(createObstacles(spec.obstacles()));
@@ -136,6 +137,27 @@ public final class Simulation {
             Convex box = Geometry.createRectangle(WALL_THICKNESS_M, length);
             box.rotate(phi);
             box.translate(centre * Math.cos(phi), centre * Math.sin(phi));
+            wall.addFixture(box, 1.0, 0.0, 0.0).setUserData(WallTag.INSTANCE);
+        }
+        wall.setMass(MassType.INFINITE);
+        return wall;
+    }
+
+    /** Builds a rectangular arena's wall as one static body: four boxes whose inner faces are the arena's sides. */
+    private static Body createRectangleWall(WorldSpec.Arena arena) {
+        Body wall = new Body();
+        double t = WALL_THICKNESS_M;
+        double w = arena.widthM();
+        double h = arena.heightM();
+        double[][] sides = { // centre x, centre y, width, height; the corners are filled by the bottom and top sides
+            {arena.x(), arena.minY() - t / 2, w + 2 * t, t},
+            {arena.x(), arena.maxY() + t / 2, w + 2 * t, t},
+            {arena.minX() - t / 2, arena.y(), t, h},
+            {arena.maxX() + t / 2, arena.y(), t, h},
+        };
+        for (double[] side : sides) {
+            Convex box = Geometry.createRectangle(side[2], side[3]);
+            box.translate(side[0], side[1]);
             wall.addFixture(box, 1.0, 0.0, 0.0).setUserData(WallTag.INSTANCE);
         }
         wall.setMass(MassType.INFINITE);
@@ -308,7 +330,7 @@ public final class Simulation {
     }
 
     private double wallClearance(double x, double y) {
-        return Math.max(0.0, spec.arena().radiusM() - Math.sqrt(x * x + y * y) - spec.robot().radiusM());
+        return Math.max(0.0, spec.arena().inside(x, y) - spec.robot().radiusM());
     }
 
     /** Lowers the minimum clearance; only obstacles within the current minimum can lower it, so ask the broadphase. */

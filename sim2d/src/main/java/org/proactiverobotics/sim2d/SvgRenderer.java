@@ -152,20 +152,42 @@ public final class SvgRenderer {
 
     /** @return the picture as an SVG document */
     public String render() {
-        double r = spec.arena().radiusM();
-        double half = r + Simulation.WALL_THICKNESS_M + MARGIN_M;
+        WorldSpec.Arena arena = spec.arena();
+        double t = Simulation.WALL_THICKNESS_M;
+        double r;
+        View v;
+        if (arena.isCircle()) {
+            r = arena.radiusM();
+            double half = r + t + MARGIN_M;
+            v = new View(-half, -half, half, half, SIZE_PX, SIZE_PX);
+        } else {
+            r = Math.max(arena.widthM(), arena.heightM()) / 2; // the font and marks scale as in a circle this wide
+            double m = t + MARGIN_M;
+            double left = arena.minX() - m;
+            double top = -(arena.maxY() + m);
+            double right = arena.maxX() + m;
+            double bottom = -(arena.minY() - m);
+            double aspect = (bottom - top) / (right - left);
+            v = aspect <= 1 ? new View(left, top, right, bottom, SIZE_PX, (int) Math.max(1, Math.round(SIZE_PX * aspect)))
+                    : new View(left, top, right, bottom, (int) Math.max(1, Math.round(SIZE_PX / aspect)), SIZE_PX);
+        }
         StringBuilder sb = new StringBuilder(4096);
         sb.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
         sb.append(f("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"%s %s %s %s\">\n",
-                SIZE_PX, SIZE_PX, n(-half), n(-half), n(2 * half), n(2 * half)));
+                v.widthPx(), v.heightPx(), n(v.left()), n(v.top()), n(v.right() - v.left()), n(v.bottom() - v.top())));
         double font = Math.max(0.18, r / 25);
         sb.append(f("<style>text{font-family:sans-serif;font-size:%spx}</style>\n", n(font)));
         sb.append(f("<rect x=\"%s\" y=\"%s\" width=\"%s\" height=\"%s\" fill=\"white\"/>\n",
-                n(-half), n(-half), n(2 * half), n(2 * half)));
+                n(v.left()), n(v.top()), n(v.right() - v.left()), n(v.bottom() - v.top())));
         sb.append(f("<title>%s</title>\n", esc(caption())));
 
-        sb.append(f("<g id=\"arena\"><circle cx=\"0\" cy=\"0\" r=\"%s\" fill=\"#fafafa\" stroke=\"#444\" stroke-width=\"%s\"/></g>\n",
-                n(r + Simulation.WALL_THICKNESS_M / 2), n(Simulation.WALL_THICKNESS_M)));
+        if (arena.isCircle()) {
+            sb.append(f("<g id=\"arena\"><circle cx=\"0\" cy=\"0\" r=\"%s\" fill=\"#fafafa\" stroke=\"#444\" stroke-width=\"%s\"/></g>\n",
+                    n(r + t / 2), n(t)));
+        } else {
+            sb.append(f("<g id=\"arena\"><rect x=\"%s\" y=\"%s\" width=\"%s\" height=\"%s\" fill=\"#fafafa\" stroke=\"#444\" stroke-width=\"%s\"/></g>\n",
+                    n(arena.minX() - t / 2), n(-(arena.maxY() + t / 2)), n(arena.widthM() + t), n(arena.heightM() + t), n(t)));
+        }
         obstacles(sb);
         station(sb, font);
         checkpoints(sb);
@@ -174,8 +196,8 @@ public final class SvgRenderer {
         markers(sb, font);
         robot(sb);
         checkpointLabels(sb, font); // after the robot, which ends on the last checkpoint
-        scaleBar(sb, half, font);
-        legend(sb, half, font);
+        scaleBar(sb, v, font);
+        legend(sb, v, font);
         sb.append("</svg>\n");
         return sb.toString();
     }
@@ -244,9 +266,9 @@ public final class SvgRenderer {
     }
 
     /** A 1 m bar at the bottom left, labelled. */
-    private void scaleBar(StringBuilder sb, double half, double font) {
-        double x0 = -half + 0.15;
-        double y = half - 0.25;
+    private void scaleBar(StringBuilder sb, View v, double font) {
+        double x0 = v.left() + 0.15;
+        double y = v.bottom() - 0.25;
         double tick = font * 0.4;
         sb.append(f("<g id=\"scale\" stroke=\"#222\" stroke-width=\"0.03\"><line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/>"
                         + "<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/><line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/>"
@@ -326,23 +348,27 @@ public final class SvgRenderer {
         sb.append("</g>\n");
     }
 
-    private void legend(StringBuilder sb, double half, double font) {
-        sb.append(f("<text x=\"%s\" y=\"%s\" font-weight=\"bold\">%s</text>\n", n(-half + 0.15), n(-half + font * 1.4),
+    private void legend(StringBuilder sb, View v, double font) {
+        sb.append(f("<text x=\"%s\" y=\"%s\" font-weight=\"bold\">%s</text>\n", n(v.left() + 0.15), n(v.top() + font * 1.4),
                 esc(caption())));
         if (trajectory.isEmpty()) {
             return;
         }
-        double y = -half + font * 2.8;
+        double y = v.top() + font * 2.8;
         for (Map.Entry<String, String> e : colours.entrySet()) {
             if (trajectory.stream().noneMatch(p -> Objects.equals(p.category() == null ? "" : p.category(), e.getKey()))) {
                 continue;
             }
             sb.append(f("<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"0.06\"/>"
                             + "<text x=\"%s\" y=\"%s\" dominant-baseline=\"central\">%s</text>\n",
-                    n(-half + 0.15), n(y), n(-half + 0.55), n(y), esc(e.getValue()), n(-half + 0.65), n(y),
+                    n(v.left() + 0.15), n(y), n(v.left() + 0.55), n(y), esc(e.getValue()), n(v.left() + 0.65), n(y),
                     esc(e.getKey().isEmpty() ? "(none)" : e.getKey())));
             y += font * 1.3;
         }
+    }
+
+    /** What the picture shows, in SVG coordinates (metres, y down), and its size in pixels. */
+    private record View(double left, double top, double right, double bottom, int widthPx, int heightPx) {
     }
 
     private static String f(String format, Object... args) {

@@ -48,7 +48,8 @@ public final class WorldFiles {
             throw new WorldValidationException(file.toString(),
                     List.of("(file): cannot read " + file + ": " + describe(e)));
         }
-        return parse(json, file.toString());
+        Path dir = file.toAbsolutePath().getParent();
+        return new WorldParser(dir).parse(json, file.toString());
     }
 
     /**
@@ -62,12 +63,23 @@ public final class WorldFiles {
 
     /**
      * @param json   a world file's text
-     * @param source what the text came from, for messages
+     * @param source what the text came from, for messages (a {@code map} file name is relative to the working directory)
      * @return the validated world
      * @throws WorldValidationException when the text is invalid
      */
     public static WorldSpec parse(String json, String source) {
-        return new WorldParser().parse(json, source);
+        return new WorldParser(null).parse(json, source);
+    }
+
+    /**
+     * @param json    a world file's text
+     * @param source  what the text came from, for messages
+     * @param baseDir the folder a {@code map} file name is relative to (the world file's)
+     * @return the validated world, a named map's walls among its obstacles
+     * @throws WorldValidationException when the text is invalid
+     */
+    public static WorldSpec parse(String json, String source, Path baseDir) {
+        return new WorldParser(baseDir).parse(json, source);
     }
 
     /**

@@ -3,7 +3,10 @@ package org.proactiverobotics.sim2d;
 import java.io.IOException;
 import java.io.StringReader;
 import java.math.BigDecimal;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -19,6 +22,10 @@ import com.google.gson.JsonPrimitive;
 import com.google.gson.Strictness;
 import com.google.gson.stream.JsonReader;
 import com.google.gson.stream.JsonToken;
+import org.proactiverobotics.sim2d.map.BoxCover;
+import org.proactiverobotics.sim2d.map.MapException;
+import org.proactiverobotics.sim2d.map.MapFiles;
+import org.proactiverobotics.sim2d.map.OccupancyGrid;
 
 /**
  * Reads a world file's JSON into a {@link WorldSpec}, collecting every problem rather than stopping at the
@@ -28,8 +35,9 @@ final class WorldParser {
 
     private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_-]+");
     private static final Set<String> ROOT_KEYS = Set.of("name", "timeStepMs", "maxSimTimeS", "seed", "arena", "robot",
-            "obstacles", "checkpoints", "checkpointRadiusM", "rechargeStation", "battery");
-    private static final Set<String> ARENA_KEYS = Set.of("radiusM");
+            "obstacles", "checkpoints", "checkpointRadiusM", "rechargeStation", "battery", "map");
+    private static final Set<String> ARENA_KEYS = Set.of("radiusM", "widthM", "heightM", "x", "y");
+    private static final Set<String> MAP_KEYS = Set.of("file", "cellM");
     private static final Set<String> ROBOT_KEYS = Set.of("x", "y", "headingDeg", "radiusM", "maxSpeedMps", "sensorRangeM",
             "sensorAnglesDeg");
     /** The most distance sensors a robot may carry (a laser scanner's rays, say). */
@@ -44,6 +52,17 @@ final class WorldParser {
     private enum Bound { ANY, POSITIVE, NON_NEGATIVE, POSITIVE_PERCENT }
 
     private final List<String> problems = new ArrayList<>();
+    /** Where a map's file name is resolved from: the world file's folder (the working directory for a string). */
+    private final Path baseDir;
+    /** The map named by the world, or null. */
+    private Path mapFile;
+    /** How many obstacles the file lists (the map's boxes follow them). */
+    private int listedObstacles;
+
+    /** @param baseDir the folder a map's file name is relative to: the world file's */
+    WorldParser(Path baseDir) {
+        this.baseDir = baseDir;
+    }
 
     /**
      * @param json   the file's text
@@ -67,9 +86,18 @@ final class WorldParser {
         Integer timeStepMs = timeStep(root);
         Double maxSimTimeS = number(root, "", "maxSimTimeS", false, Bound.POSITIVE, WorldSpec.DEFAULT_MAX_SIM_TIME_S);
         Long seed = seed(root);
-        WorldSpec.Arena arena = arena(root);
+        OccupancyGrid map = map(root);
+        WorldSpec.Arena arena = arena(root, map);
         WorldSpec.Robot robot = robot(root);
         List<WorldSpec.Obstacle> obstacles = obstacles(root);
+        if (obstacles != null) {
+            listedObstacles = obstacles.size();
+        }
+        if (obstacles != null && map != null) {
+            List<WorldSpec.Obstacle> all = new ArrayList<>(obstacles);
+            all.addAll(BoxCover.boxes(map));
+            obstacles = Collections.unmodifiableList(all);
+        }
         List<WorldSpec.Checkpoint> checkpoints = checkpoints(root);
         Double checkpointRadiusM = number(root, "", "checkpointRadiusM", false, Bound.POSITIVE,
                 WorldSpec.DEFAULT_CHECKPOINT_RADIUS_M);
@@ -167,14 +195,86 @@ final class WorldParser {
         }
     }
 
-    private WorldSpec.Arena arena(JsonObject root) {
+    /**
+     * @return the named map's cells (read now: its boxes join the obstacles), or null when the world names
+     *         none or it cannot be read (a problem recorded)
+     */
+    private OccupancyGrid map(JsonObject root) {
+        if (root.get("map") == null) {
+            return null;
+        }
+        JsonObject o = object(root, "", "map", false);
+        if (o == null) {
+            return null;
+        }
+        unknownKeys(o, "map", MAP_KEYS);
+        JsonElement f = o.get("file");
+        if (f == null) {
+            problems.add("map.file: missing required key");
+            return null;
+        }
+        if (!isString(f) || f.getAsString().isBlank()) {
+            problems.add("map.file: expected a file name, got " + kind(f));
+            return null;
+        }
+        Double cellM = number(o, "map", "cellM", false, Bound.POSITIVE, MapFiles.DEFAULT_CELL_M);
+        if (cellM == null) {
+            return null;
+        }
+        Path file;
+        try {
+            // normalised: "../maps/x.yaml" must not need the world's folder to exist before the world is written
+            file = (baseDir == null ? Path.of("") : baseDir).resolve(f.getAsString()).normalize();
+        } catch (InvalidPathException e) {
+            problems.add("map.file: not a file name: " + f.getAsString());
+            return null;
+        }
+        if (o.get("cellM") != null && !MapFiles.isMovingAi(file)) {
+            problems.add("map.cellM: only a Moving AI map (.map) takes a cell size; a map_server YAML gives its resolution");
+            return null;
+        }
+        try {
+            OccupancyGrid grid = MapFiles.read(file, cellM).grid();
+            mapFile = file;
+            return grid;
+        } catch (MapException e) {
+            problems.add("map.file: " + e.getMessage());
+            return null;
+        }
+    }
+
+    /** @return the arena: a circle, a rectangle, or the map's extent when the file names a map and no arena */
+    private WorldSpec.Arena arena(JsonObject root, OccupancyGrid map) {
+        if (root.get("arena") == null && map != null) {
+            return WorldSpec.Arena.rectangle(map.widthM(), map.heightM(), map.centreX(), map.centreY());
+        }
+        if (root.get("arena") == null && root.get("map") != null) {
+            return null; // the map's own problem is reported
+        }
         JsonObject o = object(root, "", "arena", true);
         if (o == null) {
             return null;
         }
         unknownKeys(o, "arena", ARENA_KEYS);
-        Double r = number(o, "arena", "radiusM", true, Bound.POSITIVE, null);
-        return r == null ? null : new WorldSpec.Arena(r);
+        boolean rectangle = o.has("widthM") || o.has("heightM");
+        if (rectangle && o.has("radiusM")) {
+            problems.add("arena: give radiusM (a circle) or widthM and heightM (a rectangle), not both");
+            return null;
+        }
+        if (!rectangle) {
+            for (String key : List.of("x", "y")) {
+                if (o.has(key)) {
+                    problems.add("arena." + key + ": only a rectangle has a centre; a circular arena is centred on (0, 0)");
+                }
+            }
+            Double r = number(o, "arena", "radiusM", true, Bound.POSITIVE, null);
+            return r == null ? null : new WorldSpec.Arena(r);
+        }
+        Double w = number(o, "arena", "widthM", true, Bound.POSITIVE, null);
+        Double h = number(o, "arena", "heightM", true, Bound.POSITIVE, null);
+        Double x = number(o, "arena", "x", false, Bound.ANY, 0.0);
+        Double y = number(o, "arena", "y", false, Bound.ANY, 0.0);
+        return w == null || h == null || x == null || y == null ? null : WorldSpec.Arena.rectangle(w, h, x, y);
     }
 
     private WorldSpec.Robot robot(JsonObject root) {
@@ -366,17 +466,31 @@ final class WorldParser {
     /** Checks that the robot's centre can be at (x, y): inside the arena and clear of every obstacle. */
     private void placement(String path, String what, double x, double y, WorldSpec.Arena arena, WorldSpec.Robot robot,
                            List<WorldSpec.Obstacle> obstacles) {
-        double reach = arena.radiusM() - robot.radiusM();
-        double from = Math.sqrt(x * x + y * y);
-        if (from > reach) {
+        if (arena.isCircle()) {
+            double reach = arena.radiusM() - robot.radiusM();
+            double from = Math.sqrt(x * x + y * y);
+            if (from > reach) {
+                problems.add(String.format(Locale.ROOT,
+                        "%s: %s (%s, %s) is outside the arena: %s m from the centre, but the robot's centre (radius %s m) "
+                                + "stays within %s m",
+                        path, what, fmt(x), fmt(y), fmt(from), fmt(robot.radiusM()), fmt(reach)));
+            }
+        } else if (arena.inside(x, y) < robot.radiusM()) {
+            double r = robot.radiusM();
             problems.add(String.format(Locale.ROOT,
-                    "%s: %s (%s, %s) is outside the arena: %s m from the centre, but the robot's centre (radius %s m) "
-                            + "stays within %s m",
-                    path, what, fmt(x), fmt(y), fmt(from), fmt(robot.radiusM()), fmt(reach)));
+                    "%s: %s (%s, %s) is outside the arena: the robot's centre (radius %s m) stays within x %s to %s and y %s to %s",
+                    path, what, fmt(x), fmt(y), fmt(r), fmt(arena.minX() + r), fmt(arena.maxX() - r), fmt(arena.minY() + r),
+                    fmt(arena.maxY() - r)));
         }
         for (int i = 0; i < obstacles.size(); i++) {
             double gap = obstacles.get(i).distanceTo(x, y);
             if (gap < robot.radiusM()) {
+                if (i >= listedObstacles) { // one line for the map, however many of its boxes are in the way
+                    problems.add(String.format(Locale.ROOT,
+                            "%s: %s (%s, %s) is on a wall of the map %s (occupied or unknown cells): the robot (radius %s m) would overlap it",
+                            path, what, fmt(x), fmt(y), mapFile, fmt(robot.radiusM())));
+                    break;
+                }
                 problems.add(String.format(Locale.ROOT,
                         "%s: %s (%s, %s) is inside obstacle obstacles[%d]: the robot (radius %s m) would overlap it",
                         path, what, fmt(x), fmt(y), i, fmt(robot.radiusM())));

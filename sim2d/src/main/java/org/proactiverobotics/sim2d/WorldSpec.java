@@ -13,7 +13,7 @@ import java.util.Objects;
  * @param timeStepMs        the fixed simulation step in milliseconds (1–1000)
  * @param maxSimTimeS       the mission's time limit in simulated seconds
  * @param seed              the seed of every random draw (sensor noise)
- * @param arena             the circular arena centred on (0, 0)
+ * @param arena             the arena: a circle centred on (0, 0) or a rectangle
  * @param robot             the robot's start pose and properties
  * @param obstacles         the static obstacles, possibly none
  * @param checkpoints       the checkpoints, visited in this order (at least one)
@@ -78,11 +78,68 @@ public record WorldSpec(
     }
 
     /**
-     * The circular arena, centred on (0, 0) and closed by a wall.
+     * The arena, closed by a wall: a circle centred on (0, 0), or a rectangle with sides along the axes
+     * (docs/world-file.md, docs/maps.md). Fields that do not apply to the shape are 0.
      *
-     * @param radiusM the radius of the wall's inner face, in metres
+     * @param radiusM the circle's radius to the wall's inner face, metres (0 for a rectangle)
+     * @param widthM  the rectangle's extent along x between the walls' inner faces, metres (0 for a circle)
+     * @param heightM the rectangle's extent along y, metres (0 for a circle)
+     * @param x       the rectangle's centre x, metres (0 for a circle)
+     * @param y       the rectangle's centre y, metres (0 for a circle)
      */
-    public record Arena(double radiusM) {
+    public record Arena(double radiusM, double widthM, double heightM, double x, double y) {
+
+        /** A circular arena centred on (0, 0), as every world had before rectangles. */
+        public Arena(double radiusM) {
+            this(radiusM, 0.0, 0.0, 0.0, 0.0);
+        }
+
+        /**
+         * @param widthM  extent along x, metres
+         * @param heightM extent along y, metres
+         * @param x       centre x, metres
+         * @param y       centre y, metres
+         * @return a rectangular arena
+         */
+        public static Arena rectangle(double widthM, double heightM, double x, double y) {
+            return new Arena(0.0, widthM, heightM, x, y);
+        }
+
+        /** @return whether this is the circle (else a rectangle) */
+        public boolean isCircle() {
+            return radiusM > 0.0;
+        }
+
+        /** @return the smallest x inside the arena, metres */
+        public double minX() {
+            return isCircle() ? -radiusM : x - widthM / 2.0;
+        }
+
+        /** @return the largest x inside the arena, metres */
+        public double maxX() {
+            return isCircle() ? radiusM : x + widthM / 2.0;
+        }
+
+        /** @return the smallest y inside the arena, metres */
+        public double minY() {
+            return isCircle() ? -radiusM : y - heightM / 2.0;
+        }
+
+        /** @return the largest y inside the arena, metres */
+        public double maxY() {
+            return isCircle() ? radiusM : y + heightM / 2.0;
+        }
+
+        /**
+         * @return how far (px, py) is from the wall's inner face, metres: positive inside the arena, negative
+         *         outside (for a rectangle, to the nearest side)
+         */
+        public double inside(double px, double py) {
+            if (isCircle()) {
+                return radiusM - Math.sqrt(px * px + py * py);
+            }
+            return Math.min(Math.min(px - minX(), maxX() - px), Math.min(py - minY(), maxY() - py));
+        }
     }
 
     /**

@@ -26,10 +26,18 @@ final class Scene {
         j.name("lines").openArray().open().name("type").integer(1).name("pose");
         pose(j, 0, 0, 0, 0);
         j.name("thickness").number(0.05, 3).name("scale_invariant").bool(false).name("points").openArray();
-        double r = world.arena().radiusM();
-        for (int k = 0; k < 72; k++) {
-            double a = 2 * Math.PI * k / 72;
-            point(j, r * StrictMath.cos(a), r * StrictMath.sin(a), 0);
+        WorldSpec.Arena arena = world.arena();
+        if (arena.isCircle()) {
+            double r = arena.radiusM();
+            for (int k = 0; k < 72; k++) {
+                double a = 2 * Math.PI * k / 72;
+                point(j, r * StrictMath.cos(a), r * StrictMath.sin(a), 0);
+            }
+        } else { // the rectangle's corners, counter-clockwise (a line loop, as the circle's points)
+            point(j, arena.minX(), arena.minY(), 0);
+            point(j, arena.maxX(), arena.minY(), 0);
+            point(j, arena.maxX(), arena.maxY(), 0);
+            point(j, arena.minX(), arena.maxY(), 0);
         }
         j.closeArray().name("color");
         color(j, 0.4, 0.4, 0.4, 1);

@@ -24,7 +24,15 @@ public record Solvability(boolean solvable, double lengthM, int recharges, Strin
      * @return the verdict
      */
     public static Solvability of(WorldSpec world) {
-        GridPlanner planner = new GridPlanner(world, CLEARANCE_M);
+        return of(world, new GridPlanner(world, CLEARANCE_M));
+    }
+
+    /**
+     * @param world   the world
+     * @param planner the world's planner, built with {@link #CLEARANCE_M} (one already built for the world, to reuse)
+     * @return the verdict
+     */
+    public static Solvability of(WorldSpec world, GridPlanner planner) {
         WorldSpec.Battery b = world.battery();
         WorldSpec.RechargeStation st = world.rechargeStation();
         List<double[]> stops = new ArrayList<>();
@@ -42,8 +50,9 @@ public record Solvability(boolean solvable, double lengthM, int recharges, Strin
             if (Double.isInfinite(leg)) {
                 return new Solvability(false, Double.POSITIVE_INFINITY, recharges, "checkpoints[" + k + "] cannot be reached");
             }
-            double back = planner.distance(next[0], next[1], st.x(), st.y());
             boolean last = k == stops.size() - 1;
+            // the way back to the station counts for every checkpoint but the last: not searched for the last
+            double back = last ? 0 : planner.distance(next[0], next[1], st.x(), st.y());
             double need = b.drainPerMeter() * (leg + (last ? 0 : back));
             if (battery - need < 0) { // recharge first
                 double toStation = planner.distance(x, y, st.x(), st.y());

@@ -154,8 +154,11 @@ public final class WorldGenerator {
      * The distance sensors of a robot of this size: the default rays for the default robot; a
      * wider one gets a scanner's fan (every 5° across ±30°, every 15° out to ±90°), since 16° between
      * the front rays leave a thin pillar straight ahead of a 0.3 m body unseen until it touches.
+     *
+     * @param robotRadiusM the robot's radius, metres
+     * @return the sensors' angles, degrees, rightmost first
      */
-    static List<Double> sensorAnglesDeg(double robotRadiusM) {
+    public static List<Double> sensorAnglesDeg(double robotRadiusM) {
         if (robotRadiusM <= WorldSpec.Robot.DEFAULT_RADIUS_M) {
             return WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG;
         }

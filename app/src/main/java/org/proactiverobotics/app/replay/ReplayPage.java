@@ -90,7 +90,16 @@ public final class ReplayPage {
     public static JsonObject world(WorldSpec w) {
         JsonObject o = new JsonObject();
         o.addProperty("name", w.name());
-        o.addProperty("arenaRadiusM", w.arena().radiusM());
+        if (w.arena().isCircle()) {
+            o.addProperty("arenaRadiusM", w.arena().radiusM());
+        } else { // a rectangle: its corners
+            JsonObject r = new JsonObject();
+            r.addProperty("x0", w.arena().minX());
+            r.addProperty("y0", w.arena().minY());
+            r.addProperty("x1", w.arena().maxX());
+            r.addProperty("y1", w.arena().maxY());
+            o.add("arenaRect", r);
+        }
         o.addProperty("robotRadiusM", w.robot().radiusM());
         o.addProperty("sensorRangeM", w.robot().sensorRangeM());
         o.addProperty("timeStepMs", w.timeStepMs());

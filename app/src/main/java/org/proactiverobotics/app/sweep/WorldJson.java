@@ -26,7 +26,15 @@ public final class WorldJson {
         root.addProperty("maxSimTimeS", world.maxSimTimeS());
         root.addProperty("seed", world.seed());
         JsonObject arena = new JsonObject();
-        arena.addProperty("radiusM", world.arena().radiusM());
+        WorldSpec.Arena a = world.arena();
+        if (a.isCircle()) {
+            arena.addProperty("radiusM", a.radiusM());
+        } else {
+            arena.addProperty("widthM", a.widthM());
+            arena.addProperty("heightM", a.heightM());
+            arena.addProperty("x", a.x());
+            arena.addProperty("y", a.y());
+        }
         root.add("arena", arena);
         WorldSpec.Robot r = world.robot();
         JsonObject robot = new JsonObject();

@@ -1,0 +1,345 @@
+package org.proactiverobotics.app.importmap;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.proactiverobotics.app.generate.GridPlanner;
+
+/**
+ * Places a mission on a floor from a seed: the start, K checkpoints far apart, each in another room
+ * where the floor has rooms, and the recharge station near the start. Works on the {@link GridPlanner}'s
+ * cells (where the robot's centre fits with its clearance), so that every point it places is one the
+ * planner can reach from the start.
+ * <p>
+ * Rooms: the floor's largest connected part, narrowed by {@value #ROOM_ERODE_M} m more on every side, falls
+ * apart at the doors (any opening under about 0.7 m plus the robot's inflated diameter); each part of at
+ * least {@value #MIN_ROOM_M2} m² counts as a room (a corridor is a room too). Each checkpoint goes to the
+ * unused room farthest along the floor from the points already placed (one of those within 70 % of the
+ * farthest, drawn from the seed), on one of its cells farthest from them. Where rooms run out, or the
+ * floor has none, the checkpoints are drawn the same way from the whole floor.
+ */
+final class MissionPlacer {
+
+    /** How far inside a room's inflated free floor points are placed, and how much narrowing closes a door, metres. */
+    static final double ROOM_ERODE_M = 0.35;
+    /** The smallest room, square metres. */
+    static final double MIN_ROOM_M2 = 1.0;
+    /** The station's distance along the floor from the start, metres. */
+    private static final double STATION_MIN_M = 0.8;
+    private static final double STATION_MAX_M = 2.0;
+
+    /**
+     * A mission's points, metres; checkpoints in the order to visit.
+     *
+     * @param startX      the robot's start x
+     * @param startY      the robot's start y
+     * @param headingDeg  the robot's start heading, degrees
+     * @param checkpoints each checkpoint's {x, y}
+     * @param stationX    the station's x
+     * @param stationY    the station's y
+     * @param rooms       how many rooms the floor fell apart into
+     */
+    record Placement(double startX, double startY, double headingDeg, List<double[]> checkpoints, double stationX,
+                     double stationY, int rooms) {
+    }
+
+    private final GridPlanner grid;
+    private final int w;
+    private final int h;
+    private final boolean[] free;
+    /** The breadth-first searches' queue, shared: one search at a time. */
+    private final int[] queue;
+
+    /** @param grid the floor's cells, on the robot's inflated footprint */
+    MissionPlacer(GridPlanner grid) {
+        this.grid = grid;
+        this.w = grid.columns();
+        this.h = grid.rows();
+        this.free = new boolean[w * h];
+        this.queue = new int[w * h];
+        for (int j = 0; j < h; j++) {
+            for (int i = 0; i < w; i++) {
+                free[j * w + i] = grid.free(i, j);
+            }
+        }
+    }
+
+    /**
+     * @param checkpoints how many checkpoints, at least 1
+     * @param seed        the seed: the same floor, count and seed give the same placement
+     * @return the placement
+     * @throws IllegalStateException naming why there is none (no free cell; too little floor)
+     */
+    Placement place(int checkpoints, long seed) {
+        SplittableRandom random = new SplittableRandom(seed);
+        int[] component = new int[w * h];
+        int floor = largestComponent(free, component);
+        if (floor < 0) {
+            throw new IllegalStateException("no free cell the robot fits in");
+        }
+        boolean[] onFloor = new boolean[w * h];
+        for (int c = 0; c < onFloor.length; c++) {
+            onFloor[c] = component[c] == floor;
+        }
+        int[] clearance = clearanceSteps(onFloor);
+        int minRoomCells = (int) Math.ceil(MIN_ROOM_M2 / (GridPlanner.CELL_M * GridPlanner.CELL_M));
+        List<int[]> rooms = List.of();
+        // a floor too narrow for rooms at full depth is tried shallower, down to any free cell
+        for (int depth : new int[] {steps(ROOM_ERODE_M), steps(ROOM_ERODE_M) / 2, 0}) {
+            rooms = rooms(onFloor, clearance, depth, depth == 0 ? 1 : minRoomCells);
+            if (!rooms.isEmpty()) {
+                break;
+            }
+        }
+        int[] startRoom = rooms.get(random.nextInt(rooms.size()));
+        int start = startRoom[random.nextInt(startRoom.length)];
+        double heading = 90.0 * random.nextInt(4);
+
+        int[] fromStart = geodesic(onFloor, new int[] {start}, steps(STATION_MAX_M)); // only as far as the station may be
+        int station = station(startRoom, fromStart, onFloor, random);
+        List<Integer> placed = new ArrayList<>(List.of(start, station));
+        boolean[] used = new boolean[rooms.size()];
+        used[rooms.indexOf(startRoom)] = true;
+        List<double[]> points = new ArrayList<>();
+        for (int k = 0; k < checkpoints; k++) {
+            int[] geo = geodesic(onFloor, placed.stream().mapToInt(Integer::intValue).toArray(), Integer.MAX_VALUE);
+            int pick = farRoom(rooms, used, geo, random);
+            int[] cells;
+            if (pick >= 0) {
+                used[pick] = true;
+                cells = rooms.get(pick);
+            } else { // no room left: the whole floor, away from walls as the rooms' cells are
+                cells = allCells(rooms);
+            }
+            int cell = farCell(cells, geo, random);
+            if (cell < 0 || geo[cell] <= 0) {
+                throw new IllegalStateException("too little free floor for " + checkpoints + " checkpoints");
+            }
+            placed.add(cell);
+            points.add(new double[] {round(grid.x(cell % w)), round(grid.y(cell / w))});
+        }
+        return new Placement(round(grid.x(start % w)), round(grid.y(start / w)), heading, points,
+                round(grid.x(station % w)), round(grid.y(station / w)), rooms.size());
+    }
+
+    /** @return the label of the largest 4-connected set of free cells (labels in {@code component}, -1 elsewhere), or -1 */
+    private int largestComponent(boolean[] cells, int[] component) {
+        Arrays.fill(component, -1);
+        int best = -1;
+        int bestSize = 0;
+        int label = 0;
+        for (int c = 0; c < cells.length; c++) {
+            if (!cells[c] || component[c] >= 0) {
+                continue;
+            }
+            int size = flood(cells, component, c, label);
+            if (size > bestSize) {
+                best = label;
+                bestSize = size;
+            }
+            label++;
+        }
+        return best;
+    }
+
+    /** Labels the 4-connected set of {@code cells} holding {@code seed}; @return its size */
+    private int flood(boolean[] cells, int[] labels, int seed, int label) {
+        int head = 0;
+        int tail = 0;
+        queue[tail++] = seed;
+        labels[seed] = label;
+        while (head < tail) {
+            int c = queue[head++];
+            int i = c % w;
+            for (int k = 0; k < 4; k++) {
+                int n = neighbour(c, i, k);
+                if (n >= 0 && cells[n] && labels[n] < 0) {
+                    labels[n] = label;
+                    queue[tail++] = n;
+                }
+            }
+        }
+        return tail;
+    }
+
+    /** @return cell c's k-th neighbour of four (column i), or -1 off the grid */
+    private int neighbour(int c, int i, int k) {
+        return switch (k) {
+            case 0 -> i > 0 ? c - 1 : -1;
+            case 1 -> i < w - 1 ? c + 1 : -1;
+            case 2 -> c >= w ? c - w : -1;
+            default -> c + w < w * h ? c + w : -1;
+        };
+    }
+
+    /**
+     * @return each cell's distance in steps (8 neighbours, the chessboard distance) to the nearest cell off the
+     *         floor or off the grid: two raster passes, forward then back, each cell taking its visited neighbours' best
+     */
+    private int[] clearanceSteps(boolean[] onFloor) {
+        int[] d = new int[w * h];
+        for (int j = 0; j < h; j++) {
+            for (int i = 0; i < w; i++) {
+                int c = j * w + i;
+                if (!onFloor[c]) {
+                    d[c] = 0;
+                    continue;
+                }
+                int best = i == 0 || j == 0 || i == w - 1 || j == h - 1 ? 1 : Integer.MAX_VALUE;
+                if (i > 0) {
+                    best = Math.min(best, d[c - 1] + 1);
+                }
+                if (j > 0) {
+                    best = Math.min(best, d[c - w] + 1);
+                    if (i > 0) {
+                        best = Math.min(best, d[c - w - 1] + 1);
+                    }
+                    if (i < w - 1) {
+                        best = Math.min(best, d[c - w + 1] + 1);
+                    }
+                }
+                d[c] = best;
+            }
+        }
+        for (int j = h - 1; j >= 0; j--) {
+            for (int i = w - 1; i >= 0; i--) {
+                int c = j * w + i;
+                if (d[c] == 0) {
+                    continue;
+                }
+                int best = d[c];
+                if (i < w - 1) {
+                    best = Math.min(best, d[c + 1] + 1);
+                }
+                if (j < h - 1) {
+                    best = Math.min(best, d[c + w] + 1);
+                    if (i < w - 1) {
+                        best = Math.min(best, d[c + w + 1] + 1);
+                    }
+                    if (i > 0) {
+                        best = Math.min(best, d[c + w - 1] + 1);
+                    }
+                }
+                d[c] = best;
+            }
+        }
+        return d;
+    }
+
+    /** @return the rooms: 4-connected sets of floor cells deeper than {@code depth} steps, each of at least {@code minCells} */
+    private List<int[]> rooms(boolean[] onFloor, int[] clearance, int depth, int minCells) {
+        boolean[] deep = new boolean[w * h];
+        for (int c = 0; c < deep.length; c++) {
+            deep[c] = onFloor[c] && clearance[c] > depth;
+        }
+        int[] labels = new int[w * h];
+        Arrays.fill(labels, -1);
+        List<int[]> rooms = new ArrayList<>();
+        int label = 0;
+        for (int c = 0; c < deep.length; c++) {
+            if (!deep[c] || labels[c] >= 0) {
+                continue;
+            }
+            int size = flood(deep, labels, c, label++);
+            if (size >= minCells) {
+                rooms.add(Arrays.copyOf(queue, size)); // in the flood's order, the same for the same floor
+            }
+        }
+        return rooms;
+    }
+
+    /**
+     * @return each cell's distance along the floor (4 neighbours, steps) from the nearest source, up to {@code limit}
+     *         steps; -1 where unreachable or farther
+     */
+    private int[] geodesic(boolean[] onFloor, int[] sources, int limit) {
+        int[] d = new int[w * h];
+        Arrays.fill(d, -1);
+        int head = 0;
+        int tail = 0;
+        for (int s : sources) {
+            if (d[s] < 0) {
+                d[s] = 0;
+                queue[tail++] = s;
+            }
+        }
+        while (head < tail) {
+            int c = queue[head++];
+            if (d[c] >= limit) {
+                continue;
+            }
+            int i = c % w;
+            for (int k = 0; k < 4; k++) {
+                int n = neighbour(c, i, k);
+                if (n >= 0 && onFloor[n] && d[n] < 0) {
+                    d[n] = d[c] + 1;
+                    queue[tail++] = n;
+                }
+            }
+        }
+        return d;
+    }
+
+    /** A cell of the start's room 0.8 to 2 m from the start along the floor; failing that, the farthest within 2 m. */
+    private int station(int[] room, int[] fromStart, boolean[] onFloor, SplittableRandom random) {
+        int lo = steps(STATION_MIN_M);
+        int hi = steps(STATION_MAX_M);
+        int[] near = Arrays.stream(room).filter(c -> fromStart[c] >= lo && fromStart[c] <= hi).toArray();
+        if (near.length > 0) {
+            return near[random.nextInt(near.length)];
+        }
+        int best = -1;
+        for (int c = 0; c < onFloor.length; c++) {
+            if (onFloor[c] && fromStart[c] >= 0 && fromStart[c] <= hi && (best < 0 || fromStart[c] > fromStart[best])) {
+                best = c;
+            }
+        }
+        return best;
+    }
+
+    /** @return an unused room among those reaching within 70 % of the farthest, drawn; -1 when every room is used */
+    private int farRoom(List<int[]> rooms, boolean[] used, int[] geo, SplittableRandom random) {
+        int[] reach = new int[rooms.size()];
+        int best = 0;
+        for (int r = 0; r < rooms.size(); r++) {
+            if (!used[r]) {
+                for (int c : rooms.get(r)) {
+                    reach[r] = Math.max(reach[r], geo[c]);
+                }
+                best = Math.max(best, reach[r]);
+            }
+        }
+        List<Integer> far = new ArrayList<>();
+        for (int r = 0; r < rooms.size(); r++) {
+            if (!used[r] && reach[r] > 0 && reach[r] >= 0.7 * best) {
+                far.add(r);
+            }
+        }
+        return far.isEmpty() ? -1 : far.get(random.nextInt(far.size()));
+    }
+
+    /** @return a cell among the given ones within 80 % of the farthest from the placed points, drawn; -1 when none is reachable */
+    private static int farCell(int[] cells, int[] geo, SplittableRandom random) {
+        int best = 0;
+        for (int c : cells) {
+            best = Math.max(best, geo[c]);
+        }
+        int floor = best;
+        int[] far = Arrays.stream(cells).filter(c -> geo[c] > 0 && geo[c] >= 0.8 * floor).toArray();
+        return far.length == 0 ? -1 : far[random.nextInt(far.length)];
+    }
+
+    private static int[] allCells(List<int[]> rooms) {
+        return rooms.stream().flatMapToInt(Arrays::stream).sorted().toArray();
+    }
+
+    private static int steps(double metres) {
+        return (int) Math.ceil(metres / GridPlanner.CELL_M);
+    }
+
+    /** Centimetres, as {@code generate} writes its points; a cell is 5 cm, so the point stays in its cell. */
+    private static double round(double v) {
+        return Math.round(v * 100) / 100.0;
+    }
+}
