@@ -155,7 +155,7 @@ final class PoseFilter {
         h.zero();
         h.set(0, 2, 1);
         m.innovation[0].set(0, 0, wrap(yawRad - yaw));
-        update(m, 0, sigmaRad * sigmaRad, null, true);
+        update(m, 0, sigmaRad * sigmaRad, null);
     }
 
     /**
@@ -173,7 +173,7 @@ final class PoseFilter {
         h.set(1, 1, 1);
         m.innovation[1].set(0, 0, xM - x);
         m.innovation[1].set(1, 0, yM - y);
-        update(m, 1, sigmaM * sigmaM, null, true);
+        update(m, 1, sigmaM * sigmaM, null);
     }
 
     /**
@@ -194,11 +194,11 @@ final class PoseFilter {
         m.innovation[2].set(0, 0, xM - x);
         m.innovation[2].set(1, 0, yM - y);
         m.innovation[2].set(2, 0, wrap(yawRad - yaw));
-        update(m, 2, 0, covariance, false);
+        update(m, 2, 0, covariance);
     }
 
     /** The Kalman update with the measurement set up in the scratch's H and innovation of this dimension - 1; R diagonal or full. */
-    private void update(Scratch m, int dim, double diagonalR, double[] fullR, boolean teachesScale) {
+    private void update(Scratch m, int dim, double diagonalR, double[] fullR) {
         DMatrixRMaj h = m.h[dim];
         DMatrixRMaj sMat = m.sm[dim];
         m.p.setData(p);
@@ -214,18 +214,12 @@ final class PoseFilter {
             return; // a measurement that says nothing (singular): keep the prediction
         }
         CommonOps_DDRM.mult(m.ph[dim], m.sInv[dim], m.k[dim]); // K = P H' S^-1
-        if (!teachesScale) {
-            // the scale is a "consider" state here (Schmidt): its uncertainty counts, the measurement does not move it
-            for (int j = 0; j <= dim; j++) {
-                m.k[dim].set(3, j, 0);
-            }
-        }
         CommonOps_DDRM.mult(m.k[dim], m.innovation[dim], m.dx[dim]);
         x += m.dx[dim].get(0);
         y += m.dx[dim].get(1);
         yaw = wrap(yaw + m.dx[dim].get(2));
         scale += m.dx[dim].get(3);
-        // P = (I - K H) P (I - K H)' + K R K' (Joseph's form: right for any gain, the scale's zeroed row included)
+        // P = (I - K H) P (I - K H)' + K R K' (Joseph's form: stays symmetric and positive where (I - K H) P drifts)
         CommonOps_DDRM.mult(m.k[dim], h, m.kh[dim]);
         CommonOps_DDRM.scale(-1, m.kh[dim]);
         for (int i = 0; i < 4; i++) {

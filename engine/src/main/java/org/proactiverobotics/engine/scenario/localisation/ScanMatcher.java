@@ -10,7 +10,8 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * Matches one distance scan against the engine's own occupancy map: point-to-line ICP. Each ray
  * that hit something ends at a point; the point is paired with the occupied cells nearest to it,
  * the line through those cells (their principal direction) is the wall it hit (a point past the
- * cells' end, or near fewer than {@value #MIN_WALL_CELLS} cells, is left unpaired), and Gauss-Newton
+ * cells' end, or near fewer than {@value #MIN_WALL_CELLS} cells, is paired with the nearest cell
+ * where the map has seen its place free, and left unpaired where the map knows nothing), and Gauss-Newton
  * moves the pose until the points lie on their walls, in the directions the walls pin only. The
  * result is the pose with its covariance: along a wall the scan says nothing (a corridor), and the
  * covariance says so, so the filter keeps odometry's word there. Chosen over a correlative search because the scan has a dozen rays, each
@@ -196,6 +197,21 @@ final class ScanMatcher {
 
     private final double[] line = new double[4];
 
+    /** The point paired with one cell: the normal is the point's direction from it (point to point). */
+    private double[] pointToCell(double px, double py, int i, int j) {
+        double cx = OccupancyMap.centre(i);
+        double cy = OccupancyMap.centre(j);
+        double len = Math.hypot(px - cx, py - cy);
+        if (len < 1e-9) {
+            return null;
+        }
+        line[0] = cx;
+        line[1] = cy;
+        line[2] = (px - cx) / len;
+        line[3] = (py - cy) / len;
+        return line;
+    }
+
     /**
      * The wall nearest a point: the occupied cells within {@value #PAIR_M} m of it, their centre
      * and the normal of the line through them (toward nothing in particular: the sign does not
@@ -241,10 +257,13 @@ final class ScanMatcher {
                 }
             }
         }
+        boolean seenFree = map.get(ci, cj) == OccupancyMap.FREE;
         if (count < MIN_WALL_CELLS) {
-            // a lone cell or two (a wall's end as far as the map knows it, a speck) gives no line; pairing the
-            // point with it pulls the pose back along the way it came, step after step
-            return null;
+            // a lone cell or two gives no line. Where the point lies in space the rays have seen free, the map says
+            // the wall ends before it (a door, a wall's end): the pose is off, and the nearest cell says by how much.
+            // Where it lies in the unknown, it is a part of the wall the map has not drawn yet: pairing it with the
+            // wall's last known cell pulled the pose back along the way it came, step after step.
+            return seenFree ? pointToCell(px, py, bestI, bestJ) : null;
         }
         double mx = sx / count;
         double my = sy / count;
@@ -259,7 +278,7 @@ final class ScanMatcher {
         // wall: not paired (half the window's reach past the centre)
         double along = (px - mx) * ux + (py - my) * uy;
         if (Math.abs(along) > 2.5 * OccupancyMap.CELL_M) {
-            return null;
+            return seenFree ? pointToCell(px, py, bestI, bestJ) : null;
         }
         double nx = -uy;
         double ny = ux;
