@@ -56,6 +56,9 @@ public final class RoutePlanner {
         boolean[] unseen;
         /** The robot's radius plus {@value #SIGHT_MARGIN_M} m: a straight drive keeps this far from occupied cells. */
         double sightClearanceM;
+        /** The places the follower closed (null: none), and which cells lie in one (null: none in this area). */
+        ClosedPlaces closedPlaces;
+        boolean[] inClosed;
 
         Grid(int i0, int j0, int w, int h) {
             this.i0 = i0;
@@ -79,6 +82,7 @@ public final class RoutePlanner {
             return nearStart ? occupied[k] : clearance[k] < sightClearanceM || unseen != null && unseen[k];
         }
 
+
         /**
          * @return whether the segment crosses no blocked cell (sampled every half cell); within
          *         {@code clearM} of its start only occupied cells count (the robot may already be close to a wall)
@@ -92,7 +96,7 @@ public final class RoutePlanner {
                     return false;
                 }
             }
-            return true;
+            return inClosed == null || !closedPlaces.crossed(x0, y0, x1, y1);
         }
     }
 
@@ -113,8 +117,20 @@ public final class RoutePlanner {
      * @return the route, or null when none exists even with every unknown cell free and half a cell less room
      */
     public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM) {
-        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, false);
+        return plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null);
+    }
+
+    /**
+     * As {@link #plan(OccupancyMap, double, double, double, double, double, double)}, round the
+     * places a follower closed: no route goes deeper into one than its start lies.
+     *
+     * @param closed the closed places (null: none)
+     * @return the route, or null when none exists
+     */
+    public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM,
+                             ClosedPlaces closed) {
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false, closed);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, false, closed);
     }
 
     /**
@@ -127,11 +143,16 @@ public final class RoutePlanner {
      */
     public static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
                                      double robotRadiusM) {
+        return planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null);
+    }
+
+    private static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                      double robotRadiusM, ClosedPlaces closed) {
         if (!seenNear(map, gx, gy, goalReachM)) {
             return null; // no search: a failed one covers every seen cell (the profile put it at 40 % of a mission)
         }
-        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true);
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true, closed);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true, closed);
     }
 
     /**
@@ -142,8 +163,19 @@ public final class RoutePlanner {
      */
     public static Route planSeenFirst(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
                                       double robotRadiusM) {
-        Route route = planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM);
+        return planSeenFirst(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null);
+    }
+
+    /**
+     * As {@link #planSeenFirst(OccupancyMap, double, double, double, double, double, double)}, round the closed places.
+     *
+     * @param closed the closed places (null: none)
+     * @return the route, or null when neither plan finds one
+     */
+    public static Route planSeenFirst(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                      double robotRadiusM, ClosedPlaces closed) {
+        Route route = planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed);
     }
 
     /** Whether a cell whose centre lies within {@code reachM} of a point (or the point's own cell) has been seen. */
@@ -164,7 +196,7 @@ public final class RoutePlanner {
     }
 
     private static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
-                              double robotRadiusM, double slackM, boolean seenOnly) {
+                              double robotRadiusM, double slackM, boolean seenOnly, ClosedPlaces closed) {
         double c = OccupancyMap.CELL_M;
         int margin = (int) Math.ceil(MARGIN_M / c);
         int si = OccupancyMap.cell(sx);
@@ -218,6 +250,11 @@ public final class RoutePlanner {
             }
         }
 
+        if (closed != null && !closed.isEmpty()) {
+            markClosed(g, closed);
+        }
+        boolean[] inClosed = g.inClosed;
+
         // A* over 8 neighbours, steps 10 and 14, no corner cutting; any cell near enough to the goal ends it.
         int start = (sj - g.j0) * w + (si - g.i0);
         double reach2 = goalReachM * goalReachM;
@@ -225,7 +262,7 @@ public final class RoutePlanner {
         int[] cost = new int[n];
         Arrays.fill(cost, Integer.MAX_VALUE);
         int[] from = new int[n];
-        boolean[] closed = new boolean[n];
+        boolean[] done = new boolean[n];
         long[] heap = new long[1024];
         int size = 0;
         cost[start] = 0;
@@ -239,10 +276,10 @@ public final class RoutePlanner {
             heap[0] = heap[--size];
             siftDown(heap, size);
             int k = (int) top;
-            if (closed[k]) {
+            if (done[k]) {
                 continue;
             }
-            closed[k] = true;
+            done[k] = true;
             int a = k % w;
             int b = k / w;
             double ex = OccupancyMap.centre(g.i0 + a) - gx;
@@ -258,8 +295,12 @@ public final class RoutePlanner {
                     continue;
                 }
                 int nk = nb * w + na;
-                if (g.blocked[nk] || closed[nk]) {
+                if (g.blocked[nk] || done[nk]) {
                     continue;
+                }
+                if (inClosed != null && inClosed[nk] && !closed.allows(OccupancyMap.centre(g.i0 + a), OccupancyMap.centre(g.j0 + b),
+                        OccupancyMap.centre(g.i0 + na), OccupancyMap.centre(g.j0 + nb))) {
+                    continue; // a closed place is left the way the robot came, never entered
                 }
                 if (d >= 4 && (g.blocked[b * w + na] || g.blocked[nb * w + a])) {
                     continue;
@@ -297,6 +338,28 @@ public final class RoutePlanner {
         xs[m] = gx;
         ys[m] = gy;
         return shorten(g, xs, ys, slackM, seenOnly);
+    }
+
+    /** Which grid cells lie in a closed place, worked out only over the places' own squares. */
+    private static void markClosed(Grid g, ClosedPlaces closed) {
+        g.closedPlaces = closed;
+        for (int p = 0; p < closed.size(); p++) {
+            double r = closed.radius(p);
+            int ia = Math.max(g.i0, OccupancyMap.cell(closed.x(p) - r));
+            int ib = Math.min(g.i0 + g.w - 1, OccupancyMap.cell(closed.x(p) + r));
+            int ja = Math.max(g.j0, OccupancyMap.cell(closed.y(p) - r));
+            int jb = Math.min(g.j0 + g.h - 1, OccupancyMap.cell(closed.y(p) + r));
+            for (int j = ja; j <= jb; j++) {
+                for (int i = ia; i <= ib; i++) {
+                    if (Math.hypot(OccupancyMap.centre(i) - closed.x(p), OccupancyMap.centre(j) - closed.y(p)) < r) {
+                        if (g.inClosed == null) {
+                            g.inClosed = new boolean[g.w * g.h];
+                        }
+                        g.inClosed[(j - g.j0) * g.w + (i - g.i0)] = true;
+                    }
+                }
+            }
+        }
     }
 
     /** The last distances this thread worked out, for the next plan on the same map and area. */
