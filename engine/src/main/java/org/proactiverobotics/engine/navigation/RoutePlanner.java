@@ -122,11 +122,6 @@ public final class RoutePlanner {
             return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.dist()[b * field.w() + a];
         }
 
-        /** @return a cell's distance to the nearest occupied cell, metres (capped) */
-        double dm(int k) {
-            return d(k) / 3.0 * OccupancyMap.CELL_M;
-        }
-
         /** @return whether a cell's centre lies within {@value #START_CLEAR_M} m of the start */
         boolean nearStart(int k) {
             double ox = OccupancyMap.centre(i0 + k % w) - sx;
@@ -134,23 +129,26 @@ public final class RoutePlanner {
             return ox * ox + oy * oy <= START_CLEAR_M * START_CLEAR_M;
         }
 
-        /** @return whether the body's centre may not enter a cell: too near an occupied cell, or (over seen cells only) never seen */
-        boolean blocked(int k) {
-            boolean nearStart = nearStart(k);
-            if (d(k) == 0 || dm(k) < (nearStart ? startBlockM : bodyM)) {
+        /** @return whether the body's centre may not enter a cell (column and row in the area): too near an occupied cell, or (over seen cells only) never seen */
+        boolean blocked(int a, int b) {
+            double ox = OccupancyMap.centre(i0 + a) - sx;
+            double oy = OccupancyMap.centre(j0 + b) - sy;
+            boolean nearStart = ox * ox + oy * oy <= START_CLEAR_M * START_CLEAR_M;
+            int d = sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b);
+            if (d == 0 || d / 3.0 * OccupancyMap.CELL_M < (nearStart ? startBlockM : bodyM)) {
                 return true; // occupied cells stay blocked even next to the start
             }
-            return unseen(k, nearStart);
+            return seenOnlyMap != null && !nearStart && seenOnlyMap.get(i0 + a, j0 + b) == OccupancyMap.UNKNOWN;
+        }
+
+        /** @return the extra cost of an unblocked cell (column and row in the area) near the blocked band, tenths of a cell's step */
+        int extra(int a, int b) {
+            double dm = (sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b)) / 3.0 * OccupancyMap.CELL_M;
+            return dm < bodyM + SOFT_ZONE_M ? (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M)) : 0;
         }
 
         private boolean unseen(int k, boolean nearStart) {
             return seenOnlyMap != null && !nearStart && seenOnlyMap.get(i0 + k % w, j0 + k / w) == OccupancyMap.UNKNOWN;
-        }
-
-        /** @return the extra cost of an unblocked cell near the blocked band, tenths of a cell's step */
-        int extra(int k) {
-            double dm = dm(k);
-            return dm < bodyM + SOFT_ZONE_M ? (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M)) : 0;
         }
 
         /** @return whether a straight drive may not cross a cell (map column, row); outside the area counts as free */
@@ -379,17 +377,17 @@ public final class RoutePlanner {
                     continue;
                 }
                 int nk = nb * w + na;
-                if (shut[nk] == stamp || g.blocked(nk)) {
+                if (shut[nk] == stamp || g.blocked(na, nb)) {
                     continue;
                 }
                 if (inClosed != null && inClosed[nk] && !closed.allows(OccupancyMap.centre(g.i0 + a), OccupancyMap.centre(g.j0 + b),
                         OccupancyMap.centre(g.i0 + na), OccupancyMap.centre(g.j0 + nb))) {
                     continue; // a closed place is left the way the robot came, never entered
                 }
-                if (d >= 4 && (g.blocked(b * w + na) || g.blocked(nb * w + a))) {
+                if (d >= 4 && (g.blocked(na, b) || g.blocked(a, nb))) {
                     continue;
                 }
-                int nc = cost[k] + (d < 4 ? 10 : 14) + g.extra(nk);
+                int nc = cost[k] + (d < 4 ? 10 : 14) + g.extra(na, nb);
                 if (seen[nk] != stamp || nc < cost[nk]) {
                     seen[nk] = stamp;
                     cost[nk] = nc;
