@@ -9,28 +9,28 @@ import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.sim2d.WorldFiles;
 
 /**
- * Issue 33, part 3: a gap the planner lets the 0.12 m robot through (0.30 m wide, 0.15 m from its
- * middle to each side) and the collision monitor does not. Before, the robot turned on the spot in
- * its mouth until the time limit (about 6 000 turns in 200 s, two back-offs, no re-plan); now the
+ * Issue 33, part 3: a gap the planner lets the 0.12 m robot through (0.30–0.32 m wide, 0.15–0.16 m
+ * from its middle to each side) and the collision monitor does not. Before, the robot turned on the
+ * spot in its mouth until the time limit (3 136 turns in 120 s with the door, no re-plan); now the
  * route follower sees no progress, closes the gap on its map, backs off and goes round by the door,
  * or, with no door, declares the checkpoint unreachable.
  */
 class TightGapTest {
 
-    /** A wall across the arena with a 0.30 m gap on the straight way and a 0.7 m door 4 m to the side. */
+    /** A wall across the arena with a 0.32 m gap on the straight way and a 0.7 m door 4 m to the side. */
     static final String GAP_AND_DOOR = """
             { "name": "tight-gap", "maxSimTimeS": 120, "arena": {"radiusM": 5.0},
               "robot": {"x": -2.0, "y": -1.0, "headingDeg": 0},
               "obstacles": [
-                {"shape": "box", "x": 0.0, "y": -3.0625, "widthM": 0.1, "heightM": 3.875, "angleDeg": 0},
-                {"shape": "box", "x": 0.0, "y": 0.9125, "widthM": 0.1, "heightM": 3.475, "angleDeg": 0},
+                {"shape": "box", "x": 0.0, "y": -3.075, "widthM": 0.1, "heightM": 3.85, "angleDeg": 0},
+                {"shape": "box", "x": 0.0, "y": 0.91, "widthM": 0.1, "heightM": 3.48, "angleDeg": 0},
                 {"shape": "box", "x": 0.0, "y": 4.175, "widthM": 0.1, "heightM": 1.65, "angleDeg": 0}
               ],
               "checkpoints": [{"x": 2.0, "y": -1.0}],
               "rechargeStation": {"x": -2.5, "y": -2.5, "radiusM": 0.35} }
             """;
 
-    /** The same wall without the door: the gap is the only way. */
+    /** A wall with a 0.30 m gap and no door: the gap is the only way. */
     static final String GAP_ONLY = """
             { "name": "tight-gap-only", "maxSimTimeS": 200, "arena": {"radiusM": 5.0},
               "robot": {"x": -2.0, "y": -1.0, "headingDeg": 0},
