@@ -15,8 +15,8 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * Gathers what the engine's scenarios said they believed, between two trace lines, and hands it
  * over as deltas ({@link #take}): the pose when it moved by a millimetre or a milliradian, the route
  * of the scenario whose command won when its waypoints changed, the map's cells whose state changed (kept in a mirror of the map's
- * states, one byte per cell), the veto's reason at an iteration ObstacleAvoidance won, and a
- * checkpoint declared unreachable (reason and event). It also keeps the newest pose the engine
+ * states, one byte per cell), the veto's reason at an iteration ObstacleAvoidance won, a place a
+ * route follower closed (reason), and a checkpoint declared unreachable (reason and event). It also keeps the newest pose the engine
  * had, for the pose error ({@link #hasPose}). Engine thread only.
  */
 final class BeliefTracer implements BeliefObserver {
@@ -34,6 +34,8 @@ final class BeliefTracer implements BeliefObserver {
     private String vetoReason;
     private String unreachableReason;
     private int unreachableIndex = -1;
+    /** A place a route follower closed since the last line: "scenario reason". */
+    private String closedReason;
     /** The map's cell states as the trace has them so far, by chunk. */
     private final Map<Long, byte[]> mirror = new HashMap<>();
     /** Changed cells not yet written, keyed for sorting by (iy, ix) ({@link #key}). */
@@ -82,6 +84,11 @@ final class BeliefTracer implements BeliefObserver {
     public void vetoed(long iteration, String reason) {
         vetoIteration = iteration;
         vetoReason = reason;
+    }
+
+    @Override
+    public void wayClosed(long iteration, String scenario, String reason) {
+        closedReason = scenario + " " + reason;
     }
 
     @Override
@@ -178,6 +185,10 @@ final class BeliefTracer implements BeliefObserver {
             reason = vetoReason; // it replaced the command only when it won
         }
         vetoReason = null;
+        if (closedReason != null) {
+            reason = reason == null ? closedReason : reason + "; " + closedReason;
+            closedReason = null;
+        }
         if (unreachableReason != null) {
             reason = reason == null ? unreachableReason : reason + "; " + unreachableReason;
             events.add(TraceEvent.checkpointUnreachable(unreachableIndex));

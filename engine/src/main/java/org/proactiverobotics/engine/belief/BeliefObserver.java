@@ -55,6 +55,17 @@ public interface BeliefObserver {
     }
 
     /**
+     * A scenario's route follower closed a narrow place on its map after the robot made no progress
+     * there, and plans round it from now on.
+     *
+     * @param iteration the iteration
+     * @param scenario  the scenario whose rule follows the route
+     * @param reason    where and why, in words
+     */
+    default void wayClosed(long iteration, String scenario, String reason) {
+    }
+
+    /**
      * A checkpoint was declared unreachable: the mission ends there.
      *
      * @param iteration the iteration

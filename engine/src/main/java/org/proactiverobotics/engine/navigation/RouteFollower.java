@@ -1,5 +1,8 @@
 package org.proactiverobotics.engine.navigation;
 
+import java.util.Locale;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
 /**
@@ -9,6 +12,13 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * at the goal when the map shows a clear straight way, else at the farthest waypoint in sight
  * within {@value #LOOKAHEAD_M} m of route. The route is a few waypoints kept in plain fields, so
  * it is saved with the rule: a resumed engine follows the route the uninterrupted one did.
+ *
+ * <p>Told the simulated time, it also watches its progress: when the route's remaining length has
+ * not shrunk by {@value #PROGRESS_M} m for {@value #STALL_MS} ms while the robot was driving for it
+ * (a gap the planner lets the body through and the collision monitor does not: the robot turns on
+ * the spot), it closes the tightest place on the route ahead on its own map ({@link ClosedPlaces}),
+ * backs off for {@value #BACK_OFF_MS} ms and plans again round it; when no other way remains the
+ * planner finds no route, as for a walled-in goal.
  */
 public final class RouteFollower {
 
@@ -20,6 +30,24 @@ public final class RouteFollower {
     static final double CHECK_AHEAD_M = 3.0;
     /** Near the robot a straight drive may pass this much closer to a wall than elsewhere, metres. */
     static final double NEAR_SLACK_M = RoutePlanner.SIGHT_MARGIN_M - RoutePlanner.BODY_MARGIN_M;
+    /** The route's remaining length must shrink by this much to count as progress, metres. */
+    public static final double PROGRESS_M = 0.1;
+    /** No progress for this long while driving for the route is a stall, simulated ms. */
+    public static final long STALL_MS = 5_000;
+    /** The robot staying within {@value #STAY_M} m of one spot for this long while driving is a stall too, simulated ms. */
+    static final long STAY_MS = 4 * STALL_MS;
+    /** The spot's radius for {@link #STAY_MS}, metres. */
+    static final double STAY_M = 0.5;
+    /** After a stall the robot backs off straight for this long, simulated ms. */
+    public static final long BACK_OFF_MS = 1_000;
+    /** Backing-off speed, as a share of the top speed. */
+    static final double BACK_SPEED = 0.3;
+    /** The route ahead is searched this far for its tightest place, metres along it. */
+    static final double CLOSE_AHEAD_M = 1.0;
+    /** Clearances are measured up to this far, metres. */
+    static final double CLEARANCE_CAP_M = 0.5;
+    /** After this many stalls inside places already closed the follower finds no route any more. */
+    public static final int STALLS_INSIDE_LIMIT = 3;
 
     /** A follower of routes planned with unknown cells free. */
     public RouteFollower() {
@@ -40,7 +68,9 @@ public final class RouteFollower {
         /** A target to drive at. */
         TARGET,
         /** No route: the planner found none this call. */
-        NO_ROUTE
+        NO_ROUTE,
+        /** Backing off after a stall: drive {@link #backOffCommand}. */
+        BACK_OFF
     }
 
     private double[] xs;
@@ -54,6 +84,19 @@ public final class RouteFollower {
     private double slackM;
     /** Whether the route is one over seen cells: then the robot aims only along seen cells too. */
     private boolean seenRoute;
+    /** The places closed after stalls, planned round. */
+    private ClosedPlaces closed = new ClosedPlaces();
+    /** The smallest remaining length since the last progress, metres, and since when, simulated ms (-1: not watching). */
+    private double progressBestM;
+    private long progressSinceMs = -1;
+    /** The spot the robot has stayed near, metres, and since when, simulated ms. */
+    private double stayX;
+    private double stayY;
+    private long staySinceMs = -1;
+    /** Backing off until this simulated time, ms (-1: not backing off). */
+    private long backUntilMs = -1;
+    /** Stalls with the robot inside a place already closed: it cannot get out of a narrow place. */
+    private int stallsInside;
 
     /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
     private transient double[] legM;
@@ -61,6 +104,8 @@ public final class RouteFollower {
     private transient double targetY;
     /** Whether the last step planned (a route, or none found): the route may have changed. */
     private transient boolean planned;
+    /** Whether the last step closed a place ({@link ClosedPlaces#newestReason()} says why). */
+    private transient boolean closedNow;
     private static final double[] NONE = new double[0];
 
     /**
@@ -76,6 +121,206 @@ public final class RouteFollower {
      * @return TARGET ({@link #targetX()}, {@link #targetY()}), or NO_ROUTE when the planner found none
      */
     public Status step(OccupancyMap map, double x, double y, double goalX, double goalY, double goalReachM, double robotRadiusM) {
+        closedNow = false;
+        return route(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
+    }
+
+    /**
+     * One step that also watches the progress (see the class's description): plans if needed,
+     * chooses what to drive at, and after a stall closes the place, backs off and plans round it.
+     *
+     * @param map          the map known so far
+     * @param x            the robot's x, metres
+     * @param y            its y, metres
+     * @param yawRad       its heading, radians
+     * @param goalX        the goal's x, metres
+     * @param goalY        its y, metres
+     * @param goalReachM   any point this close to the goal will do, metres
+     * @param robotRadiusM the robot's radius, metres
+     * @param simTimeMs    the simulated time of the pose, ms
+     * @param driving      whether the robot drove for this route since the last step (its command won, or the
+     *                     collision monitor vetoed it); time spent otherwise (charging, another goal) is no stall
+     * @return TARGET, NO_ROUTE, or BACK_OFF ({@link #backOffCommand})
+     */
+    public Status step(OccupancyMap map, double x, double y, double yawRad, double goalX, double goalY, double goalReachM,
+                       double robotRadiusM, long simTimeMs, boolean driving) {
+        closedNow = false;
+        if (stallsInside >= STALLS_INSIDE_LIMIT) {
+            planned = false;
+            plansWithoutRoute++;
+            return Status.NO_ROUTE; // boxed in a narrow place it cannot leave: no way it can drive
+        }
+        if (backUntilMs >= 0) {
+            if (simTimeMs < backUntilMs && clearBehind(map, x, y, yawRad, robotRadiusM)) {
+                planned = false;
+                return Status.BACK_OFF;
+            }
+            backUntilMs = -1;
+            xs = null; // plan afresh from where the back-off ended
+            restartWatch();
+        }
+        Status status = route(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
+        if (status != Status.TARGET) {
+            progressSinceMs = -1;
+            staySinceMs = -1;
+            return status;
+        }
+        double remaining = remainingM(x, y, goalX, goalY);
+        if (!driving || progressSinceMs < 0 || remaining < progressBestM - PROGRESS_M
+                || planned && remaining > progressBestM + PROGRESS_M) {
+            // progress, a new longer way, or time not spent on this route: the watch starts again
+            progressBestM = remaining;
+            progressSinceMs = simTimeMs;
+        }
+        if (!driving || staySinceMs < 0 || beyond(x - stayX, y - stayY, STAY_M)) {
+            stayX = x;
+            stayY = y;
+            staySinceMs = simTimeMs;
+        }
+        long noProgressMs = simTimeMs - progressSinceMs;
+        if (noProgressMs >= STALL_MS || simTimeMs - staySinceMs >= STAY_MS) {
+            if (closed.inside(x, y) && ++stallsInside >= STALLS_INSIDE_LIMIT) {
+                xs = null;
+                ys = null;
+                planned = true;
+                plansWithoutRoute++;
+                return Status.NO_ROUTE;
+            }
+            closeAhead(map, x, y, robotRadiusM, Math.max(noProgressMs, simTimeMs - staySinceMs));
+            backUntilMs = simTimeMs + BACK_OFF_MS;
+            if (clearBehind(map, x, y, yawRad, robotRadiusM)) {
+                return Status.BACK_OFF;
+            }
+            backUntilMs = -1;
+            xs = null;
+            restartWatch();
+            return route(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
+        }
+        return status;
+    }
+
+    /** Starts the progress watch afresh at the next step. */
+    private void restartWatch() {
+        progressSinceMs = -1;
+        staySinceMs = -1;
+    }
+
+    /**
+     * @param profile the robot's drive
+     * @return the command of a step of backing off: straight back at {@value #BACK_SPEED} of the top speed
+     */
+    public static String backOffCommand(DriveProfile profile) {
+        return Steering.drive(-BACK_SPEED * profile.maxSpeedMps(), 0.0, profile);
+    }
+
+    /** @return whether the follower gave up: {@value #STALLS_INSIDE_LIMIT} stalls inside places it had closed */
+    public boolean boxedIn() {
+        return stallsInside >= STALLS_INSIDE_LIMIT;
+    }
+
+    /** @return the places closed after stalls (do not change) */
+    public ClosedPlaces closed() {
+        return closed;
+    }
+
+    /** @return whether the last step closed a place: {@link ClosedPlaces#newestReason()} says which and why */
+    public boolean closedNow() {
+        return closedNow;
+    }
+
+    /** Whether backing off 0.15 m straight keeps the body off the map's occupied cells it would come nearer to. */
+    private static boolean clearBehind(OccupancyMap map, double x, double y, double yawRad, double robotRadiusM) {
+        double keep = robotRadiusM + RoutePlanner.BODY_MARGIN_M;
+        for (int q = 1; q <= 10; q++) {
+            double back = 0.015 * q;
+            if (map.occupiedApproached(x, y, x - back * Math.cos(yawRad), y - back * Math.sin(yawRad), keep)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Closes the tightest place of the route within {@value #CLOSE_AHEAD_M} m ahead (by the map's
+     * occupied cells; the middle of the first stretch within a centimetre of the tightest): a disc
+     * that reaches its nearest walls, so that the planner's band of cells through it is shut, open
+     * only toward the way the route came. With no route, the robot's own spot.
+     */
+    private void closeAhead(OccupancyMap map, double x, double y, double robotRadiusM, long stalledMs) {
+        int samples = 0;
+        double[] sx = new double[64];
+        double[] sy = new double[64];
+        double[] sc = new double[64];
+        double[] dirX = new double[64];
+        double[] dirY = new double[64];
+        if (xs != null) {
+            int k = nearest(x, y);
+            double px = x;
+            double py = y;
+            double along = 0;
+            double step = OccupancyMap.CELL_M / 2;
+            for (int q = k + 1; q < xs.length && along < CLOSE_AHEAD_M; q++) {
+                double len = Math.hypot(xs[q] - px, ys[q] - py);
+                int n = Math.max(1, (int) Math.ceil(len / step));
+                for (int m = 1; m <= n && along + len * m / n <= CLOSE_AHEAD_M && samples < sx.length; m++) {
+                    sx[samples] = px + (xs[q] - px) * m / n;
+                    sy[samples] = py + (ys[q] - py) * m / n;
+                    sc[samples] = clearance(map, sx[samples], sy[samples]);
+                    dirX[samples] = xs[q] - px;
+                    dirY[samples] = ys[q] - py;
+                    samples++;
+                }
+                along += len;
+                px = xs[q];
+                py = ys[q];
+            }
+        }
+        if (samples == 0) {
+            closeAt(x, y, robotRadiusM, clearance(map, x, y), 1.0, 0.0, stalledMs);
+            return;
+        }
+        double tightest = Double.POSITIVE_INFINITY;
+        for (int q = 0; q < samples; q++) {
+            tightest = Math.min(tightest, sc[q]);
+        }
+        int first = 0;
+        while (sc[first] > tightest + 0.01) {
+            first++;
+        }
+        int last = first;
+        while (last + 1 < samples && sc[last + 1] <= tightest + 0.01) {
+            last++;
+        }
+        int mid = (first + last) / 2;
+        closeAt(sx[mid], sy[mid], robotRadiusM, tightest, -dirX[mid], -dirY[mid], stalledMs);
+    }
+
+    private void closeAt(double px, double py, double robotRadiusM, double clearM, double backX, double backY, long stalledMs) {
+        double radiusM = Math.min(Math.max(clearM, robotRadiusM) + OccupancyMap.CELL_M, 2 * robotRadiusM);
+        closed.close(px, py, radiusM, backX, backY, String.format(Locale.ROOT,
+                "closed the way at (%.2f, %.2f) on the map, %.2f m from the nearest wall: no progress along the route for %.1f s;"
+                        + " backing off and planning round it", px, py, Math.min(clearM, CLEARANCE_CAP_M), stalledMs / 1000.0));
+        closedNow = true;
+    }
+
+    /** The distance from a point to the nearest occupied cell's centre, metres, capped at {@value #CLEARANCE_CAP_M}. */
+    private static double clearance(OccupancyMap map, double px, double py) {
+        if (!map.occupiedWithin(px, py, CLEARANCE_CAP_M)) {
+            return CLEARANCE_CAP_M;
+        }
+        double best = CLEARANCE_CAP_M;
+        for (int j = OccupancyMap.cell(py - CLEARANCE_CAP_M); j <= OccupancyMap.cell(py + CLEARANCE_CAP_M); j++) {
+            for (int i = OccupancyMap.cell(px - CLEARANCE_CAP_M); i <= OccupancyMap.cell(px + CLEARANCE_CAP_M); i++) {
+                double d = Math.hypot(OccupancyMap.centre(i) - px, OccupancyMap.centre(j) - py);
+                if (d < best && map.get(i, j) == OccupancyMap.OCCUPIED) {
+                    best = d;
+                }
+            }
+        }
+        return best;
+    }
+
+    private Status route(OccupancyMap map, double x, double y, double goalX, double goalY, double goalReachM, double robotRadiusM) {
         double sightM = robotRadiusM + RoutePlanner.SIGHT_MARGIN_M;
         int nearest = xs == null ? -1 : nearest(x, y);
         boolean plan = xs == null || ++sincePlan >= REPLAN_EVERY
@@ -85,8 +330,9 @@ public final class RouteFollower {
         planned = plan;
         if (plan) {
             sincePlan = 0;
-            Route route = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM)
-                    : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM);
+            ClosedPlaces round = closed.isEmpty() ? null : closed;
+            Route route = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round)
+                    : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round);
             if (route == null) {
                 plansWithoutRoute++;
                 xs = null;
@@ -103,7 +349,7 @@ public final class RouteFollower {
             legM = null;
             nearest = 0;
         }
-        if (inSight(map, x, y, goalX, goalY, sightM, seenRoute)) {
+        if (inSight(map, x, y, goalX, goalY, sightM, seenRoute) && !closed.crossed(x, y, goalX, goalY)) {
             targetX = goalX;
             targetY = goalY;
             return Status.TARGET;
@@ -116,7 +362,7 @@ public final class RouteFollower {
             if (k > chosen && along > LOOKAHEAD_M) {
                 break;
             }
-            if (inSight(map, x, y, xs[k], ys[k], sightM, seenRoute)) {
+            if (inSight(map, x, y, xs[k], ys[k], sightM, seenRoute) && !closed.crossed(x, y, xs[k], ys[k])) {
                 chosen = k;
             }
         }

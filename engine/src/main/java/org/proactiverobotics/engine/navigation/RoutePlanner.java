@@ -41,31 +41,114 @@ public final class RoutePlanner {
      */
     public static final double TIGHT_SLACK_M = OccupancyMap.CELL_M / 2;
 
-    /** The blocked cells of one plan's area. */
+    /**
+     * An area of at least this many cells (a floor of about 20 m by 20 m) grows in whole blocks and
+     * has its distances updated where cells flipped, not worked out afresh each plan.
+     */
+    static final int LARGE_CELLS = 160_000;
+    /** A large area's bounds are multiples of this many cells. */
+    static final int AREA_BLOCK = 64;
+
+    /**
+     * A* search's arrays, kept by the thread from plan to plan: a cell's cost and parent count only
+     * where its mark is this plan's, so that a plan costs what it searches, not its whole area.
+     */
+    private static final class Search {
+        private static final ThreadLocal<Search> OF_THREAD = ThreadLocal.withInitial(Search::new);
+        int[] cost = new int[0];
+        int[] from = new int[0];
+        /** Cells reached (cost and parent valid) and cells done, where equal to {@link #stamp}. */
+        int[] seen = new int[0];
+        int[] shut = new int[0];
+        int stamp;
+        long[] heap = new long[1024];
+
+        /** @return this thread's arrays, large enough for an area of n cells, with a fresh stamp */
+        static Search forArea(int n) {
+            Search s = OF_THREAD.get();
+            if (s.cost.length < n || s.stamp == Integer.MAX_VALUE) {
+                int size = Math.max(n, s.cost.length);
+                s.cost = new int[size];
+                s.from = new int[size];
+                s.seen = new int[size];
+                s.shut = new int[size];
+                s.stamp = 0;
+            }
+            s.stamp++;
+            return s;
+        }
+    }
+
+    /**
+     * One plan's area: which cells are blocked and what they cost, worked out from the distances
+     * when the search asks (a large floor's plan touches a small part of its area).
+     */
     private static final class Grid {
         final int i0;
         final int j0;
         final int w;
         final int h;
-        final boolean[] blocked;
-        final boolean[] occupied;
-        /** A cell's distance to the nearest occupied cell, metres (capped). */
-        final float[] clearance;
-        final int[] extra;
-        /** Cells never seen, for a plan over seen cells only (null: unknown cells are free). */
-        boolean[] unseen;
+        /** The chamfer distances to the nearest occupied cell (thirds of a cell, capped), over this area or one round the map. */
+        Distances field;
+        /** Whether {@link #field} covers exactly this area (then a cell's index is its index there too). */
+        boolean sameArea;
+        /** The map, for a plan over seen cells only (null: unknown cells are free). */
+        OccupancyMap seenOnlyMap;
+        double sx;
+        double sy;
+        /** A cell is blocked closer than this to an occupied cell, metres; near the start, closer than {@link #startBlockM}. */
+        double bodyM;
+        double startBlockM;
         /** The robot's radius plus {@value #SIGHT_MARGIN_M} m: a straight drive keeps this far from occupied cells. */
         double sightClearanceM;
+        /** The places the follower closed (null: none), and which cells lie in one (null: none in this area). */
+        ClosedPlaces closedPlaces;
+        boolean[] inClosed;
 
         Grid(int i0, int j0, int w, int h) {
             this.i0 = i0;
             this.j0 = j0;
             this.w = w;
             this.h = h;
-            this.blocked = new boolean[w * h];
-            this.occupied = new boolean[w * h];
-            this.clearance = new float[w * h];
-            this.extra = new int[w * h];
+        }
+
+        /** @return a cell's chamfer distance to the nearest occupied cell, thirds of a cell (capped) */
+        int d(int k) {
+            if (sameArea) {
+                return field.dist()[k];
+            }
+            int a = i0 + k % w - field.i0();
+            int b = j0 + k / w - field.j0();
+            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.dist()[b * field.w() + a];
+        }
+
+        /** @return whether a cell's centre lies within {@value #START_CLEAR_M} m of the start */
+        boolean nearStart(int k) {
+            double ox = OccupancyMap.centre(i0 + k % w) - sx;
+            double oy = OccupancyMap.centre(j0 + k / w) - sy;
+            return ox * ox + oy * oy <= START_CLEAR_M * START_CLEAR_M;
+        }
+
+        /** @return whether the body's centre may not enter a cell (column and row in the area): too near an occupied cell, or (over seen cells only) never seen */
+        boolean blocked(int a, int b) {
+            double ox = OccupancyMap.centre(i0 + a) - sx;
+            double oy = OccupancyMap.centre(j0 + b) - sy;
+            boolean nearStart = ox * ox + oy * oy <= START_CLEAR_M * START_CLEAR_M;
+            int d = sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b);
+            if (d == 0 || d / 3.0 * OccupancyMap.CELL_M < (nearStart ? startBlockM : bodyM)) {
+                return true; // occupied cells stay blocked even next to the start
+            }
+            return seenOnlyMap != null && !nearStart && seenOnlyMap.get(i0 + a, j0 + b) == OccupancyMap.UNKNOWN;
+        }
+
+        /** @return the extra cost of an unblocked cell (column and row in the area) near the blocked band, tenths of a cell's step */
+        int extra(int a, int b) {
+            double dm = (sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b)) / 3.0 * OccupancyMap.CELL_M;
+            return dm < bodyM + SOFT_ZONE_M ? (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M)) : 0;
+        }
+
+        private boolean unseen(int k, boolean nearStart) {
+            return seenOnlyMap != null && !nearStart && seenOnlyMap.get(i0 + k % w, j0 + k / w) == OccupancyMap.UNKNOWN;
         }
 
         /** @return whether a straight drive may not cross a cell (map column, row); outside the area counts as free */
@@ -76,8 +159,18 @@ public final class RoutePlanner {
                 return false;
             }
             int k = b * w + a;
-            return nearStart ? occupied[k] : clearance[k] < sightClearanceM || unseen != null && unseen[k];
+            int d = sameArea ? field.dist()[k] : dAt(i, j);
+            // a cell the body may not enter is nearer a wall than a straight drive keeps: the clearance decides
+            return nearStart ? d == 0 : (float) (d / 3.0 * OccupancyMap.CELL_M) < sightClearanceM || unseen(k, nearStart(k));
         }
+
+        /** @return the chamfer distance of the cell at map column i, row j, thirds of a cell (capped) */
+        private int dAt(int i, int j) {
+            int a = i - field.i0();
+            int b = j - field.j0();
+            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.dist()[b * field.w() + a];
+        }
+
 
         /**
          * @return whether the segment crosses no blocked cell (sampled every half cell); within
@@ -92,7 +185,7 @@ public final class RoutePlanner {
                     return false;
                 }
             }
-            return true;
+            return inClosed == null || !closedPlaces.crossed(x0, y0, x1, y1);
         }
     }
 
@@ -113,8 +206,20 @@ public final class RoutePlanner {
      * @return the route, or null when none exists even with every unknown cell free and half a cell less room
      */
     public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM) {
-        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, false);
+        return plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null);
+    }
+
+    /**
+     * As {@link #plan(OccupancyMap, double, double, double, double, double, double)}, round the
+     * places a follower closed: no route goes deeper into one than its start lies.
+     *
+     * @param closed the closed places (null: none)
+     * @return the route, or null when none exists
+     */
+    public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM,
+                             ClosedPlaces closed) {
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false, closed);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, false, closed);
     }
 
     /**
@@ -127,11 +232,16 @@ public final class RoutePlanner {
      */
     public static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
                                      double robotRadiusM) {
+        return planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null);
+    }
+
+    private static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                      double robotRadiusM, ClosedPlaces closed) {
         if (!seenNear(map, gx, gy, goalReachM)) {
             return null; // no search: a failed one covers every seen cell (the profile put it at 40 % of a mission)
         }
-        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true);
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true, closed);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true, closed);
     }
 
     /**
@@ -142,8 +252,19 @@ public final class RoutePlanner {
      */
     public static Route planSeenFirst(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
                                       double robotRadiusM) {
-        Route route = planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM);
+        return planSeenFirst(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null);
+    }
+
+    /**
+     * As {@link #planSeenFirst(OccupancyMap, double, double, double, double, double, double)}, round the closed places.
+     *
+     * @param closed the closed places (null: none)
+     * @return the route, or null when neither plan finds one
+     */
+    public static Route planSeenFirst(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                      double robotRadiusM, ClosedPlaces closed) {
+        Route route = planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed);
     }
 
     /** Whether a cell whose centre lies within {@code reachM} of a point (or the point's own cell) has been seen. */
@@ -164,7 +285,7 @@ public final class RoutePlanner {
     }
 
     private static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
-                              double robotRadiusM, double slackM, boolean seenOnly) {
+                              double robotRadiusM, double slackM, boolean seenOnly, ClosedPlaces closed) {
         double c = OccupancyMap.CELL_M;
         int margin = (int) Math.ceil(MARGIN_M / c);
         int si = OccupancyMap.cell(sx);
@@ -189,47 +310,45 @@ public final class RoutePlanner {
 
         // Chamfer distance (3-4, in thirds of a cell) to the nearest occupied cell, capped.
         int cap = (int) Math.ceil((robotRadiusM + BODY_MARGIN_M + SOFT_ZONE_M) / c) * 3 + 4;
-        int[] dist = distances(map, g, cap);
-        double clear2 = START_CLEAR_M * START_CLEAR_M;
+        Grid fieldArea = g;
+        if ((long) w * h >= LARGE_CELLS && !map.isEmpty()) {
+            // a floor's distances are kept over the map, grown in whole blocks as it is explored, wherever start and goal lie
+            int lo = Math.floorDiv(map.minCell(true) - margin, AREA_BLOCK) * AREA_BLOCK;
+            int lj = Math.floorDiv(map.minCell(false) - margin, AREA_BLOCK) * AREA_BLOCK;
+            int hi = Math.floorDiv(map.maxCellExclusive(true) - 1 + margin, AREA_BLOCK) * AREA_BLOCK + AREA_BLOCK;
+            int hj = Math.floorDiv(map.maxCellExclusive(false) - 1 + margin, AREA_BLOCK) * AREA_BLOCK + AREA_BLOCK;
+            fieldArea = new Grid(lo, lj, hi - lo, hj - lj);
+        }
+        g.field = distances(map, fieldArea, cap);
+        g.sameArea = fieldArea == g;
         int startCell = (sj - g.j0) * w + (si - g.i0);
         // near the start a cell is blocked only where the body would be tighter than it is already
-        double bodyM = robotRadiusM + BODY_MARGIN_M - slackM;
-        double startBlockM = Math.min(bodyM, dist[startCell] / 3.0 * c - OccupancyMap.CELL_M / 2);
-        for (int b = 0; b < h; b++) {
-            for (int a = 0; a < w; a++) {
-                int k = b * w + a;
-                double dm = dist[k] / 3.0 * c;
-                g.clearance[k] = (float) dm;
-                double ox = OccupancyMap.centre(g.i0 + a) - sx;
-                double oy = OccupancyMap.centre(g.j0 + b) - sy;
-                boolean nearStart = ox * ox + oy * oy <= clear2;
-                if (dist[k] == 0 || dm < (nearStart ? startBlockM : bodyM)) {
-                    g.blocked[k] = true; // occupied cells stay blocked even next to the start
-                    g.occupied[k] = dist[k] == 0;
-                } else if (seenOnly && !nearStart && map.get(g.i0 + a, g.j0 + b) == OccupancyMap.UNKNOWN) {
-                    g.blocked[k] = true;
-                    if (g.unseen == null) {
-                        g.unseen = new boolean[n];
-                    }
-                    g.unseen[k] = true;
-                } else if (dm < bodyM + SOFT_ZONE_M) {
-                    g.extra[k] = (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M));
-                }
-            }
+        g.sx = sx;
+        g.sy = sy;
+        g.bodyM = robotRadiusM + BODY_MARGIN_M - slackM;
+        g.startBlockM = Math.min(g.bodyM, g.d(startCell) / 3.0 * c - OccupancyMap.CELL_M / 2);
+        g.seenOnlyMap = seenOnly ? map : null;
+
+        if (closed != null && !closed.isEmpty()) {
+            markClosed(g, closed);
         }
+        boolean[] inClosed = g.inClosed;
 
         // A* over 8 neighbours, steps 10 and 14, no corner cutting; any cell near enough to the goal ends it.
         int start = (sj - g.j0) * w + (si - g.i0);
         double reach2 = goalReachM * goalReachM;
         int reachTenths = (int) Math.floor(goalReachM / c * 10);
-        int[] cost = new int[n];
-        Arrays.fill(cost, Integer.MAX_VALUE);
-        int[] from = new int[n];
-        boolean[] closed = new boolean[n];
-        long[] heap = new long[1024];
+        Search search = Search.forArea(n);
+        int[] cost = search.cost;
+        int[] from = search.from;
+        int[] seen = search.seen;
+        int[] shut = search.shut;
+        int stamp = search.stamp;
+        long[] heap = search.heap;
         int size = 0;
         cost[start] = 0;
         from[start] = -1;
+        seen[start] = stamp;
         heap[size++] = ((long) heuristic(si, sj, gi, gj, reachTenths) << 32) | start;
         int[] di = {1, -1, 0, 0, 1, 1, -1, -1};
         int[] dj = {0, 0, 1, -1, 1, -1, 1, -1};
@@ -239,10 +358,10 @@ public final class RoutePlanner {
             heap[0] = heap[--size];
             siftDown(heap, size);
             int k = (int) top;
-            if (closed[k]) {
+            if (shut[k] == stamp) {
                 continue;
             }
-            closed[k] = true;
+            shut[k] = stamp;
             int a = k % w;
             int b = k / w;
             double ex = OccupancyMap.centre(g.i0 + a) - gx;
@@ -258,14 +377,19 @@ public final class RoutePlanner {
                     continue;
                 }
                 int nk = nb * w + na;
-                if (g.blocked[nk] || closed[nk]) {
+                if (shut[nk] == stamp || g.blocked(na, nb)) {
                     continue;
                 }
-                if (d >= 4 && (g.blocked[b * w + na] || g.blocked[nb * w + a])) {
+                if (inClosed != null && inClosed[nk] && !closed.allows(OccupancyMap.centre(g.i0 + a), OccupancyMap.centre(g.j0 + b),
+                        OccupancyMap.centre(g.i0 + na), OccupancyMap.centre(g.j0 + nb))) {
+                    continue; // a closed place is left the way the robot came, never entered
+                }
+                if (d >= 4 && (g.blocked(na, b) || g.blocked(a, nb))) {
                     continue;
                 }
-                int nc = cost[k] + (d < 4 ? 10 : 14) + g.extra[nk];
-                if (nc < cost[nk]) {
+                int nc = cost[k] + (d < 4 ? 10 : 14) + g.extra(na, nb);
+                if (seen[nk] != stamp || nc < cost[nk]) {
+                    seen[nk] = stamp;
                     cost[nk] = nc;
                     from[nk] = k;
                     long f = nc + (long) heuristic(g.i0 + na, g.j0 + nb, gi, gj, reachTenths);
@@ -277,6 +401,7 @@ public final class RoutePlanner {
                 }
             }
         }
+        search.heap = heap;
         if (end < 0) {
             return null;
         }
@@ -299,6 +424,28 @@ public final class RoutePlanner {
         return shorten(g, xs, ys, slackM, seenOnly);
     }
 
+    /** Which grid cells lie in a closed place, worked out only over the places' own squares. */
+    private static void markClosed(Grid g, ClosedPlaces closed) {
+        g.closedPlaces = closed;
+        for (int p = 0; p < closed.size(); p++) {
+            double r = closed.radius(p);
+            int ia = Math.max(g.i0, OccupancyMap.cell(closed.x(p) - r));
+            int ib = Math.min(g.i0 + g.w - 1, OccupancyMap.cell(closed.x(p) + r));
+            int ja = Math.max(g.j0, OccupancyMap.cell(closed.y(p) - r));
+            int jb = Math.min(g.j0 + g.h - 1, OccupancyMap.cell(closed.y(p) + r));
+            for (int j = ja; j <= jb; j++) {
+                for (int i = ia; i <= ib; i++) {
+                    if (Math.hypot(OccupancyMap.centre(i) - closed.x(p), OccupancyMap.centre(j) - closed.y(p)) < r) {
+                        if (g.inClosed == null) {
+                            g.inClosed = new boolean[g.w * g.h];
+                        }
+                        g.inClosed[(j - g.j0) * g.w + (i - g.i0)] = true;
+                    }
+                }
+            }
+        }
+    }
+
     /** The last distances this thread worked out, for the next plan on the same map and area. */
     private static final ThreadLocal<Distances> LAST_DISTANCES = new ThreadLocal<>();
 
@@ -313,12 +460,21 @@ public final class RoutePlanner {
     /**
      * Each grid cell's chamfer distance (3-4, in thirds of a cell) to the nearest occupied cell,
      * capped; the same as the last plan's, not worked out again, when neither the occupied cells
-     * nor the area changed (the two sweeps were most of a plan's time, JFR). Read only.
+     * nor the area changed (the two sweeps were most of a plan's time, JFR); on a large area,
+     * updated where cells flipped ({@link #updated}). Read only.
      */
-    private static int[] distances(OccupancyMap map, Grid g, int cap) {
+    private static Distances distances(OccupancyMap map, Grid g, int cap) {
         Distances last = LAST_DISTANCES.get();
         if (last != null && last.of(map, g, cap)) {
-            return last.dist();
+            return last;
+        }
+        if ((long) g.w * g.h >= LARGE_CELLS && last != null && last.map().get() == map && last.cap() == cap) {
+            int[] dist = updated(map, g, cap, last);
+            if (dist != null) {
+                Distances now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, g.w, g.h, cap, dist);
+                LAST_DISTANCES.set(now);
+                return now;
+            }
         }
         int w = g.w;
         int h = g.h;
@@ -358,8 +514,102 @@ public final class RoutePlanner {
                 dist[k] = d;
             }
         }
-        LAST_DISTANCES.set(new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist));
+        Distances now = new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist);
+        LAST_DISTANCES.set(now);
+        return now;
+    }
+
+    /**
+     * The last distances carried over to this area and worked out again only round the cells whose
+     * occupancy flipped since: within a square of the cap's reach about them, from the occupied
+     * cells within twice that (the chamfer distance there is exact: the occupied cells it is taken
+     * from lie in the square's margin, and a chamfer path between two cells keeps to their bounding
+     * box). Null when the map no longer knows what flipped, or so much did that a whole sweep is cheaper.
+     */
+    private static int[] updated(OccupancyMap map, Grid g, int cap, Distances last) {
+        int w = g.w;
+        int h = g.h;
+        int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
+        if (!map.forEachFlipSince(last.version(), (i, j) -> {
+            box[0] = Math.min(box[0], i);
+            box[1] = Math.min(box[1], j);
+            box[2] = Math.max(box[2], i);
+            box[3] = Math.max(box[3], j);
+        })) {
+            return null;
+        }
+        int reach = (cap + 2) / 3; // cells farther than this from every occupied cell are at the cap
+        int pa0 = Math.max(g.i0, box[0] - reach);
+        int pb0 = Math.max(g.j0, box[1] - reach);
+        int pa1 = Math.min(g.i0 + w - 1, box[2] + reach);
+        int pb1 = Math.min(g.j0 + h - 1, box[3] + reach);
+        if (box[0] != Integer.MAX_VALUE && (long) (pa1 - pa0 + 1) * (pb1 - pb0 + 1) * 4 > (long) w * h) {
+            return null;
+        }
+        int[] dist;
+        if (last.i0() == g.i0 && last.j0() == g.j0 && last.w() == w && last.h() == h) {
+            dist = last.dist(); // updated in place: the last plan's grid is gone
+        } else {
+            // every occupied cell lies a metre inside both areas: a cell outside the old one is at the cap
+            dist = new int[w * h];
+            Arrays.fill(dist, cap);
+            int a0 = Math.max(g.i0, last.i0());
+            int a1 = Math.min(g.i0 + w, last.i0() + last.w());
+            for (int j = Math.max(g.j0, last.j0()); j < Math.min(g.j0 + h, last.j0() + last.h()) && a0 < a1; j++) {
+                System.arraycopy(last.dist(), (j - last.j0()) * last.w() + a0 - last.i0(), dist, (j - g.j0) * w + a0 - g.i0, a1 - a0);
+            }
+        }
+        if (box[0] == Integer.MAX_VALUE) {
+            return dist;
+        }
+        // the square with a margin of the reach, swept as the whole area is
+        int ea0 = Math.max(g.i0, pa0 - reach);
+        int eb0 = Math.max(g.j0, pb0 - reach);
+        int ew = Math.min(g.i0 + w - 1, pa1 + reach) - ea0 + 1;
+        int eh = Math.min(g.j0 + h - 1, pb1 + reach) - eb0 + 1;
+        int[] d = new int[ew * eh];
+        for (int b = 0; b < eh; b++) {
+            for (int a = 0; a < ew; a++) {
+                d[b * ew + a] = map.get(ea0 + a, eb0 + b) == OccupancyMap.OCCUPIED ? 0 : cap;
+            }
+        }
+        sweep(d, ew, eh);
+        for (int j = pb0; j <= pb1; j++) {
+            for (int i = pa0; i <= pa1; i++) {
+                dist[(j - g.j0) * w + i - g.i0] = d[(j - eb0) * ew + i - ea0];
+            }
+        }
         return dist;
+    }
+
+    /** The two chamfer sweeps (3-4) over an area whose occupied cells are 0 and others the cap. */
+    private static void sweep(int[] dist, int w, int h) {
+        for (int b = 0; b < h; b++) {
+            for (int a = 0; a < w; a++) {
+                int k = b * w + a;
+                int d = dist[k];
+                if (a > 0) d = Math.min(d, dist[k - 1] + 3);
+                if (b > 0) {
+                    d = Math.min(d, dist[k - w] + 3);
+                    if (a > 0) d = Math.min(d, dist[k - w - 1] + 4);
+                    if (a < w - 1) d = Math.min(d, dist[k - w + 1] + 4);
+                }
+                dist[k] = d;
+            }
+        }
+        for (int b = h - 1; b >= 0; b--) {
+            for (int a = w - 1; a >= 0; a--) {
+                int k = b * w + a;
+                int d = dist[k];
+                if (a < w - 1) d = Math.min(d, dist[k + 1] + 3);
+                if (b < h - 1) {
+                    d = Math.min(d, dist[k + w] + 3);
+                    if (a < w - 1) d = Math.min(d, dist[k + w + 1] + 4);
+                    if (a > 0) d = Math.min(d, dist[k + w - 1] + 4);
+                }
+                dist[k] = d;
+            }
+        }
     }
 
     /** Keeps only the points a straight drive must pass through: from each kept point, the last one of the chain still in sight. */
@@ -369,11 +619,16 @@ public final class RoutePlanner {
         int count = 0;
         kept[count++] = 0;
         int at = 0;
+        boolean large = (long) g.w * g.h >= LARGE_CELLS;
         while (at < n - 1) {
             int next = at + 1;
             double clearM = at == 0 ? START_CLEAR_M : 0.0;
-            while (next + 1 < n && g.visible(xs[at], ys[at], xs[next + 1], ys[next + 1], clearM)) {
-                next++;
+            if (large) {
+                next = farthestInSight(g, xs, ys, at, clearM);
+            } else {
+                while (next + 1 < n && g.visible(xs[at], ys[at], xs[next + 1], ys[next + 1], clearM)) {
+                    next++;
+                }
             }
             kept[count++] = next;
             at = next;
@@ -385,6 +640,40 @@ public final class RoutePlanner {
             ry[q] = ys[kept[q]];
         }
         return new Route(rx, ry, slackM, seenOnly);
+    }
+
+    /**
+     * On a large area, a far chain point in sight of point {@code at}: the steps ahead double while
+     * the point that far is in sight, then halve back to the last in sight (a chain of a thousand
+     * cells checked one by one was a third of a floor's plan, JFR). Each leg is still checked; it
+     * may end short of the farthest point in sight where the sight is broken and then clear again.
+     */
+    private static int farthestInSight(Grid g, double[] xs, double[] ys, int at, double clearM) {
+        int n = xs.length;
+        int good = at + 1;
+        int step = 1;
+        int bad = -1;
+        while (good + step < n) {
+            if (g.visible(xs[at], ys[at], xs[good + step], ys[good + step], clearM)) {
+                good += step;
+                step *= 2;
+            } else {
+                bad = good + step;
+                break;
+            }
+        }
+        if (bad < 0) {
+            bad = n;
+        }
+        while (bad - good > 1) {
+            int mid = (good + bad) >>> 1;
+            if (g.visible(xs[at], ys[at], xs[mid], ys[mid], clearM)) {
+                good = mid;
+            } else {
+                bad = mid;
+            }
+        }
+        return good;
     }
 
     private static int heuristic(int i, int j, int gi, int gj, int reachTenths) {

@@ -52,6 +52,10 @@ public final class OccupancyMap {
     private int stored;
     /** Counts changes to which cells are occupied: equal counts, the same occupied cells. */
     private long occupancyVersion;
+    /** The cells whose occupancy flipped, packed ({@link #key}), flip v at index v mod the length: the newest {@value #JOURNAL} flips. */
+    private final long[] journal = new long[JOURNAL];
+    /** How many flips the journal keeps. */
+    private static final int JOURNAL = 4096;
     private final Set<Long> changed = new LinkedHashSet<>();
     private int minCx = Integer.MAX_VALUE;
     private int minCy = Integer.MAX_VALUE;
@@ -133,18 +137,18 @@ public final class OccupancyMap {
         }
         chunks[at] = cells;
         int occupied = 0;
-        boolean flipped = false;
         for (int q = 0; q < cells.length; q++) {
             boolean now = cells[q] >= OCCUPIED;
             if (now) {
                 occupied++;
             }
-            flipped |= now != (before != null && before[q] >= OCCUPIED);
+            if (now != (before != null && before[q] >= OCCUPIED)) {
+                // the map's rows are read again every iteration, mostly unchanged: only flips count
+                occupancyVersion++;
+                journal[(int) (occupancyVersion % JOURNAL)] = key(cx * CHUNK_CELLS + q % CHUNK_CELLS, cy * CHUNK_CELLS + q / CHUNK_CELLS);
+            }
         }
         occupiedIn[at] = occupied;
-        if (flipped) {
-            occupancyVersion++; // the map's rows are read again every iteration, mostly unchanged
-        }
         extend(cx, cy);
     }
 
@@ -271,6 +275,7 @@ public final class OccupancyMap {
         if ((c[at] >= OCCUPIED) != (state >= OCCUPIED)) {
             occupiedIn[(cy - originCy) * columns + cx - originCx] += state >= OCCUPIED ? 1 : -1;
             occupancyVersion++;
+            journal[(int) (occupancyVersion % JOURNAL)] = key(i, j);
         }
         c[at] = state;
         changed.add(k);
@@ -287,6 +292,25 @@ public final class OccupancyMap {
     /** @return a count that changes whenever a cell becomes or stops being occupied (a cache's key) */
     public long occupancyVersion() {
         return occupancyVersion;
+    }
+
+    /**
+     * Visits the cells whose occupancy flipped since a version (a cell may come more than once),
+     * when the map still knows them: an incremental consumer's way to update what it derived.
+     *
+     * @param version an earlier {@link #occupancyVersion()}
+     * @param visitor told of each flipped cell
+     * @return false (nothing visited) when the map no longer knows which cells flipped since then
+     */
+    public boolean forEachFlipSince(long version, CellVisitor visitor) {
+        if (occupancyVersion - version > JOURNAL || version > occupancyVersion) {
+            return false;
+        }
+        for (long v = version + 1; v <= occupancyVersion; v++) {
+            long k = journal[(int) (v % JOURNAL)];
+            visitor.cell((int) (k >> 32), (int) k);
+        }
+        return true;
     }
 
     /** @return whether no chunk is stored */

@@ -110,4 +110,97 @@ class RouteFollowerTest {
         assertThat(seen.targetY()).as("up the seen band first, not across unseen cells").isGreaterThan(0.5);
         assertThat(seen.remainingM(0.0, 0.0, gx, 0.0)).isGreaterThan(gx + 1.0);
     }
+
+    /** A wall along x = 0 from y = -3 to 3 with a gap of {@code gapM} centred on y = 0, and (optionally) a door at y = 2. */
+    private static OccupancyMap gapWall(double gapM, boolean door) {
+        OccupancyMap map = OccupancyMap.empty();
+        wall(map, 0.0, -3.0, -gapM / 2 - 0.001);
+        if (door) {
+            wall(map, 0.0, gapM / 2 + 0.001, 1.6);
+            wall(map, 0.0, 2.4, 3.0);
+        } else {
+            wall(map, 0.0, gapM / 2 + 0.001, 3.0);
+        }
+        return map;
+    }
+
+    /**
+     * Issue 33: a robot that makes no progress along its route for {@value RouteFollower#STALL_MS} ms
+     * (here it stands still in front of a gap the planner lets it through) closes that gap on its
+     * map, backs off, and plans round it: through the door when there is one.
+     */
+    @Test
+    void aStallClosesTheGapBacksOffAndPlansRoundIt() {
+        OccupancyMap map = gapWall(0.32, true);
+        RouteFollower follower = new RouteFollower();
+        long t = 0;
+        RouteFollower.Status status = follower.step(map, -0.3, 0, 0, 2, 0, 0.1, RADIUS_M, t, true);
+        assertThat(status).isEqualTo(RouteFollower.Status.TARGET);
+        assertThat(follower.remainingM(-0.3, 0, 2, 0)).as("straight through the gap").isLessThan(2.4);
+        while (status == RouteFollower.Status.TARGET && t <= RouteFollower.STALL_MS + 32) {
+            t += 32;
+            status = follower.step(map, -0.3, 0, 0, 2, 0, 0.1, RADIUS_M, t, true);
+        }
+        assertThat(status).as("after %d ms without progress", t).isEqualTo(RouteFollower.Status.BACK_OFF);
+        assertThat(follower.closedNow()).isTrue();
+        assertThat(follower.closed().size()).isEqualTo(1);
+        assertThat(follower.closed().newestReason()).startsWith("closed the way at (").contains("no progress along the route for 5.0 s");
+        assertThat(follower.closed().inside(0.0, 0.0)).as("the gap itself").isTrue();
+        // backing off for a second, then a route round through the door
+        long until = t + RouteFollower.BACK_OFF_MS;
+        for (t += 32; t < until; t += 32) {
+            assertThat(follower.step(map, -0.35, 0, 0, 2, 0, 0.1, RADIUS_M, t, true)).isEqualTo(RouteFollower.Status.BACK_OFF);
+        }
+        assertThat(follower.step(map, -0.45, 0, 0, 2, 0, 0.1, RADIUS_M, t, true)).isEqualTo(RouteFollower.Status.TARGET);
+        assertThat(follower.targetY()).as("toward the door, not the gap").isGreaterThan(0.5);
+        assertThat(follower.remainingM(-0.45, 0, 2, 0)).as("round by the door").isGreaterThan(4.0);
+    }
+
+    @Test
+    void withTheGapClosedAndNoOtherWayThereIsNoRoute() {
+        OccupancyMap map = gapWall(0.32, false);
+        wall(map, -3.0, -3.0, 3.0);
+        wall(map, 3.0, -3.0, 3.0);
+        for (double x = -3.0; x <= 3.0; x += OccupancyMap.CELL_M / 2) {
+            map.set(OccupancyMap.cell(x), OccupancyMap.cell(-3.0), OccupancyMap.OCCUPIED);
+            map.set(OccupancyMap.cell(x), OccupancyMap.cell(3.0), OccupancyMap.OCCUPIED);
+        }
+        RouteFollower follower = new RouteFollower();
+        RouteFollower.Status status = RouteFollower.Status.TARGET;
+        long t;
+        for (t = 0; t <= RouteFollower.STALL_MS + RouteFollower.BACK_OFF_MS + 128 && status != RouteFollower.Status.NO_ROUTE; t += 32) {
+            status = follower.step(map, -0.3, 0, 0, 2, 0, 0.1, RADIUS_M, t, true);
+        }
+        assertThat(status).isEqualTo(RouteFollower.Status.NO_ROUTE);
+        assertThat(follower.closed().describe()).startsWith("(");
+    }
+
+    @Test
+    void timeNotSpentDrivingForTheRouteIsNoStall() {
+        OccupancyMap map = gapWall(0.32, true);
+        RouteFollower follower = new RouteFollower();
+        for (long t = 0; t < 4 * RouteFollower.STALL_MS; t += 32) {
+            assertThat(follower.step(map, -0.3, 0, 0, 2, 0, 0.1, RADIUS_M, t, false)).as("charging, say").isEqualTo(RouteFollower.Status.TARGET);
+        }
+        assertThat(follower.closed().isEmpty()).isTrue();
+    }
+
+    @Test
+    void closedPlacesAreSavedWithTheFollowerAndPlannedRoundAfterARestore() {
+        OccupancyMap map = gapWall(0.32, true);
+        RouteFollower follower = new RouteFollower();
+        RouteFollower.Status status = RouteFollower.Status.TARGET;
+        long t;
+        for (t = 0; status == RouteFollower.Status.TARGET; t += 32) {
+            status = follower.step(map, -0.3, 0, 0, 2, 0, 0.1, RADIUS_M, t, true);
+        }
+        Gson gson = new Gson();
+        RouteFollower restored = gson.fromJson(gson.toJson(follower), RouteFollower.class);
+        for (long end = t + RouteFollower.BACK_OFF_MS + 64; t < end; t += 32) {
+            assertThat(restored.step(map, -0.4, 0, 0, 2, 0, 0.1, RADIUS_M, t, true))
+                    .isEqualTo(follower.step(map, -0.4, 0, 0, 2, 0, 0.1, RADIUS_M, t, true));
+        }
+        assertThat(restored.targetY()).isEqualTo(follower.targetY()).isGreaterThan(0.5);
+        assertThat(gson.toJson(restored)).isEqualTo(gson.toJson(follower));
+    }
 }

@@ -74,4 +74,56 @@ class RoutePlannerTest {
         assertThat(seen.lengthM()).as("up, across and down the seen band").isGreaterThan(optimistic.lengthM() + 1.0);
         assertThat(RoutePlanner.planOverSeen(map, 0.0, 0.0, gx, -2.0, 0.1, RADIUS_M)).as("a goal in unseen space").isNull();
     }
+
+    /** A floor of rooms 5 m across with a 1 m door in the middle of each inner wall, walls of cells, from -15 m to 15 m. */
+    private static void rooms(OccupancyMap map) {
+        for (int line = -300; line <= 300; line += 100) {
+            for (int t = -300; t <= 300; t++) {
+                boolean door = line != -300 && line != 300 && Math.floorMod(t, 100) >= 40 && Math.floorMod(t, 100) < 60;
+                if (!door) {
+                    map.set(line, t, OccupancyMap.OCCUPIED);
+                    map.set(t, line, OccupancyMap.OCCUPIED);
+                }
+            }
+        }
+    }
+
+    /**
+     * Issue 33: on a large floor the distances are carried from plan to plan and worked out again
+     * only round the cells that flipped; the routes are the ones a plan from scratch finds, walls
+     * added and taken away, the map's rows read back whole as the engine reads them.
+     */
+    @Test
+    void onALargeFloorTheRoutesAfterFlipsAreThoseOfAPlanFromScratch() {
+        OccupancyMap map = OccupancyMap.empty();
+        rooms(map);
+        double sx = -12.5;
+        double sy = -12.5;
+        double gx = 12.5;
+        double gy = 12.4;
+        Route first = RoutePlanner.plan(map, sx, sy, gx, gy, 0.1, RADIUS_M);
+        assertThat(first).isNotNull();
+        // the start room's east door closed and a second door opened north, on a copy whose
+        // changed rows are then put into the map the planner knows, as KnownMap brings it up to date
+        OccupancyMap edited = OccupancyMap.of(map.takeChanged());
+        edit(edited);
+        map.putAll(edited.takeChanged());
+        Route carried = RoutePlanner.plan(map, sx, sy, gx, gy, 0.1, RADIUS_M);
+        OccupancyMap fresh = OccupancyMap.empty();
+        rooms(fresh);
+        edit(fresh);
+        Route scratch = RoutePlanner.plan(fresh, sx, sy, gx, gy, 0.1, RADIUS_M);
+        assertThat(carried.xs()).containsExactly(scratch.xs());
+        assertThat(carried.ys()).containsExactly(scratch.ys());
+        assertThat(carried.xs()).as("the changed walls changed the route").isNotEqualTo(first.xs());
+    }
+
+    private static void edit(OccupancyMap map) {
+        for (int t = -260; t < -240; t++) {
+            map.set(-200, t, OccupancyMap.OCCUPIED);
+        }
+        for (int t = -230; t < -210; t++) {
+            map.set(t, -200, OccupancyMap.FREE);
+        }
+    }
 }

@@ -120,4 +120,21 @@ class OccupancyMapTest {
         assertThat(map.occupancyVersion()).as("the same occupied cells").isEqualTo(version);
         assertThat(map.occupiedWithin(-3.0, 2.0, 0.2)).isTrue();
     }
+
+    @Test
+    void theFlipsSinceAVersionAreToldWhileTheJournalHoldsThem() {
+        OccupancyMap map = OccupancyMap.empty();
+        map.set(1, 2, OccupancyMap.OCCUPIED);
+        long v = map.occupancyVersion();
+        map.set(3, 4, OccupancyMap.OCCUPIED);
+        map.set(3, 5, OccupancyMap.FREE); // seen, not a flip
+        map.set(1, 2, OccupancyMap.FREE);
+        java.util.List<String> flips = new java.util.ArrayList<>();
+        assertThat(map.forEachFlipSince(v, (i, j) -> flips.add(i + "," + j))).isTrue();
+        assertThat(flips).containsExactly("3,4", "1,2");
+        for (int k = 0; k < 5000; k++) {
+            map.set(k, -7, OccupancyMap.OCCUPIED);
+        }
+        assertThat(map.forEachFlipSince(v, (i, j) -> { })).as("older than the journal").isFalse();
+    }
 }

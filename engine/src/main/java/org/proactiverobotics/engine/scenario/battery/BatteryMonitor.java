@@ -47,6 +47,12 @@ public final class BatteryMonitor extends Rule {
     static final double REPLAN_AFTER_M = 0.5;
     /** ... and at least this often, iterations. */
     static final int REPLAN_EVERY = 32;
+    /**
+     * A way back longer than this is planned again proportionally less often (a way of 100 m after
+     * 5 m and 320 iterations), metres: the estimate meanwhile is the plan plus what was driven, an
+     * upper bound while the map holds, and on a large floor the plan was most of the engine's time.
+     */
+    static final double LONG_WAY_M = 10.0;
 
     private DrainEstimate drain = new DrainEstimate();
     /** Just handed back by a recharge: the next leg is taken whatever it asks. */
@@ -111,12 +117,14 @@ public final class BatteryMonitor extends Rule {
 
     /**
      * The way back to the station, metres: planned again every {@value #REPLAN_AFTER_M} m driven
-     * and every {@value #REPLAN_EVERY} iterations (walls seen since may lengthen it), else the last
+     * and every {@value #REPLAN_EVERY} iterations (walls seen since may lengthen it; proportionally
+     * less often for a way longer than {@value #LONG_WAY_M} m), else the last
      * plan plus the distance driven since; the straight line when no route is known.
      */
     private double wayBackM(RuleContext ctx) {
         double straightM = position.distanceTo(station.xM(), station.yM());
-        if (wayBackM < 0 || drivenSincePlanM > REPLAN_AFTER_M || sincePlan >= REPLAN_EVERY) {
+        double longer = Math.max(1.0, wayBackM / LONG_WAY_M);
+        if (wayBackM < 0 || drivenSincePlanM > REPLAN_AFTER_M * longer || sincePlan >= REPLAN_EVERY * longer) {
             OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
             double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
             double reachM = station.radiusM() * MoveToRecharge.AT_STATION_FRACTION * 0.9;

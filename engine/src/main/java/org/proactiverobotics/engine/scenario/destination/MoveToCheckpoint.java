@@ -4,9 +4,11 @@ import java.util.Locale;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.SharedMemory;
 import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.tables.Checkpoint;
@@ -23,7 +25,10 @@ import org.proactiverobotics.engine.tables.PoseEstimateTable;
  * at the farthest waypoint in sight. When the planner has found no route at all for
  * {@value #NO_ROUTE_MS} ms of simulated time (the robot stopped, scanning: a wall a noisy reading
  * drew across a doorway is cleared by the rays that pass through it), it marks the checkpoint
- * unreachable and generates GetCheckpoint (which then stops the robot).
+ * unreachable and generates GetCheckpoint (which then stops the robot). When the robot makes no
+ * progress along the route for {@value RouteFollower#STALL_MS} ms (a gap too tight for the collision
+ * monitor), the follower closes that place on its map, backs off and plans round it
+ * ({@link RouteFollower}); with no other way left, no plan finds a route, as above.
  */
 public final class MoveToCheckpoint extends Rule {
 
@@ -99,10 +104,17 @@ public final class MoveToCheckpoint extends Rule {
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
-        RouteFollower.Status status = route.step(map, position.xM(), position.yM(), xM, yM,
-                Checkpoint.routeReachM(radiusM), profile.axleWidthM() / 2);
+        RouteFollower.Status status = route.step(map, position.xM(), position.yM(), position.yawRad(), xM, yM,
+                Checkpoint.routeReachM(radiusM), profile.axleWidthM() / 2, position.simTimeMs(), drivingForThis(ctx));
+        if (belief != null && route.closedNow()) {
+            belief.wayClosed(ctx.iteration(), scenario(), route.closed().newestReason());
+        }
         if (belief != null && route.planned()) {
             belief.route(ctx.iteration(), scenario(), route.waypointsX(), route.waypointsY());
+        }
+        if (status == RouteFollower.Status.BACK_OFF) {
+            ctx.suggest(RouteFollower.backOffCommand(profile));
+            return;
         }
         if (status == RouteFollower.Status.NO_ROUTE) {
             if (noRouteSinceMs < 0) {
@@ -125,9 +137,20 @@ public final class MoveToCheckpoint extends Rule {
 
     /** What the engine knows of why: no plan on its map found a way to the checkpoint for so long. */
     private String unreachableReason(long forMs) {
-        return String.format(Locale.ROOT, "no route to checkpoint %d (index %d) at (%.2f, %.2f) on the map from (%.2f, %.2f):"
+        String why = String.format(Locale.ROOT, "no route to checkpoint %d (index %d) at (%.2f, %.2f) on the map from (%.2f, %.2f):"
                         + " every plan for %.1f s found none (%d in a row), the way walled in as the map has it",
                 seq + 1, seq, xM, yM, position.xM(), position.yM(), forMs / 1000.0, route.plansWithoutRoute());
+        if (route.closed().isEmpty()) {
+            return why;
+        }
+        return why + (route.boxedIn() ? ", the robot boxed in by" : " and") + " the narrow places closed where it made no progress: "
+                + route.closed().describe();
+    }
+
+    /** Whether the robot drove for this rule's route last iteration: its command won, or the collision monitor vetoed it. */
+    private boolean drivingForThis(RuleContext ctx) {
+        String last = ctx.memory().values().get(SharedMemory.LAST_DECISION);
+        return last != null && (last.startsWith(scenario() + " ") || last.startsWith(ObstacleAvoidanceScenario.NAME + " "));
     }
 
     @Override
