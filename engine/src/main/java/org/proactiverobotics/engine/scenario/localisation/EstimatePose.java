@@ -45,8 +45,6 @@ public final class EstimatePose extends Rule {
     private long headingMs = -1;
     private long gpsMs = -1;
     private long scanMs = -1;
-    /** Scans matched and taken, for the trace's reader and the tests. */
-    private long matches;
 
     private transient GpsFix gps;
     private transient Heading heading;
@@ -108,7 +106,6 @@ public final class EstimatePose extends Rule {
             var map = ctx.service(KnownMap.class).current(ctx.iteration(), newest);
             if (matcher.match(map, filter.x(), filter.y(), filter.yaw(), radius, scan, HIT_SHARE)) {
                 filter.correctPose(matcher.xM, matcher.yM, matcher.yawRad, matcher.covariance);
-                matches++;
             }
         }
         write(ctx, new PoseEstimate(newest, filter.x(), filter.y(), filter.yaw(),
@@ -123,7 +120,7 @@ public final class EstimatePose extends Rule {
      */
     private boolean start(RuleContext ctx) {
         PoseEstimate stored = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
-        if (stored != null) {
+        if (stored != null && stored.knowsHeading()) {
             filter.start(stored.xM(), stored.yM(), stored.yawRad(), Math.max(START_SIGMA_M, stored.positionSigmaM()),
                     Math.max(START_SIGMA_RAD, Math.sqrt(stored.varYaw())));
             return true;
@@ -158,11 +155,6 @@ public final class EstimatePose extends Rule {
         ctx.service(PoseEstimateTable.class).writePose(estimate);
         ctx.findService(BeliefObserver.class)
                 .ifPresent(b -> b.pose(ctx.iteration(), estimate.xM(), estimate.yM(), estimate.yawRad()));
-    }
-
-    /** @return how many scans were matched against the map and corrected the estimate */
-    public long matches() {
-        return matches;
     }
 
     @Override
