@@ -488,32 +488,7 @@ public final class RoutePlanner {
                 dist[b * w + a] = 0;
             }
         });
-        for (int b = 0; b < h; b++) {
-            for (int a = 0; a < w; a++) {
-                int k = b * w + a;
-                int d = dist[k];
-                if (a > 0) d = Math.min(d, dist[k - 1] + 3);
-                if (b > 0) {
-                    d = Math.min(d, dist[k - w] + 3);
-                    if (a > 0) d = Math.min(d, dist[k - w - 1] + 4);
-                    if (a < w - 1) d = Math.min(d, dist[k - w + 1] + 4);
-                }
-                dist[k] = d;
-            }
-        }
-        for (int b = h - 1; b >= 0; b--) {
-            for (int a = w - 1; a >= 0; a--) {
-                int k = b * w + a;
-                int d = dist[k];
-                if (a < w - 1) d = Math.min(d, dist[k + 1] + 3);
-                if (b < h - 1) {
-                    d = Math.min(d, dist[k + w] + 3);
-                    if (a < w - 1) d = Math.min(d, dist[k + w + 1] + 4);
-                    if (a > 0) d = Math.min(d, dist[k + w - 1] + 4);
-                }
-                dist[k] = d;
-            }
-        }
+        sweep(dist, w, h);
         Distances now = new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist);
         LAST_DISTANCES.set(now);
         return now;
