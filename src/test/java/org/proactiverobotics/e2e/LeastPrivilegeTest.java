@@ -107,6 +107,21 @@ class LeastPrivilegeTest {
     }
 
     @Test
+    void theEngineAloneWritesItsPoseEstimateTheRobotAloneSeedsTheInitialPose() throws Exception {
+        asEngine("INSERT INTO pose_estimate (robot_id, sim_time_ms, x_m, y_m, yaw_rad, var_x, var_y, var_yaw, cov_xy, cov_x_yaw,"
+                + " cov_y_yaw) VALUES (97, 32, 1, 2, 0, 0, 0, 0, 0, 0, 0)");
+        asRobot("INSERT INTO initial_pose (robot_id, x_m, y_m, yaw_rad) VALUES (97, 1, 2, 0)");
+        asEngine("SELECT x_m FROM initial_pose WHERE robot_id = 97");
+        assertThatThrownBy(() -> asRobot("SELECT x_m FROM pose_estimate")).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asRobot("INSERT INTO pose_estimate (robot_id, sim_time_ms, x_m, y_m, yaw_rad, var_x, var_y,"
+                + " var_yaw, cov_xy, cov_x_yaw, cov_y_yaw) VALUES (97, 64, 0, 0, 0, 0, 0, 0, 0, 0, 0)")).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asEngine("UPDATE pose_estimate SET x_m = 0 WHERE robot_id = 97")).hasMessageContaining("denied");
+        assertThatThrownBy(() -> asEngine("INSERT INTO initial_pose (robot_id, x_m, y_m, yaw_rad) VALUES (96, 0, 0, 0)"))
+                .hasMessageContaining("denied");
+        asEngine("DELETE FROM pose_estimate WHERE robot_id = 97"); // pruning, and a new run starting clean
+    }
+
+    @Test
     void neitherMayDropAlterCreateOrGrant() {
         for (String user : List.of("engine", "robot")) {
             for (String sql : List.of("DROP TABLE engine_comments", "ALTER TABLE gps_stored_values ADD COLUMN x INT",
@@ -148,7 +163,7 @@ class LeastPrivilegeTest {
         List<String> engineGrants = grants(deployment.engineUser);
         List<String> robotGrants = grants(deployment.robotUser);
         List<String> viewerGrants = grants(deployment.viewerUser);
-        assertThat(viewerGrants).hasSize(12); // USAGE and eleven SELECTs
+        assertThat(viewerGrants).hasSize(14); // USAGE and thirteen SELECTs (initial_pose and pose_estimate among them)
         assertThat(engineGrants).hasSizeGreaterThan(10);
         StringWriter err = new StringWriter();
         CommandLine cl = Main.commandLine();

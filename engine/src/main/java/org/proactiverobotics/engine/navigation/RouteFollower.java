@@ -48,6 +48,13 @@ public final class RouteFollower {
     static final double CLEARANCE_CAP_M = 0.5;
     /** After this many stalls inside places already closed the follower finds no route any more. */
     public static final int STALLS_INSIDE_LIMIT = 3;
+    /**
+     * When the places it closed are all that stand between the robot and its goal, they are opened
+     * again this many times before the follower finds no route: a stall is not proof that a place
+     * is too narrow (a noisy map, a detour the robot was turning through), and the scans taken while
+     * backing off may show it wider since.
+     */
+    public static final int REOPENINGS = 1;
 
     /** A follower of routes planned with unknown cells free. */
     public RouteFollower() {
@@ -97,6 +104,8 @@ public final class RouteFollower {
     private long backUntilMs = -1;
     /** Stalls with the robot inside a place already closed: it cannot get out of a narrow place. */
     private int stallsInside;
+    /** How often the closed places were opened again because they alone blocked the goal. */
+    private int reopened;
 
     /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
     private transient double[] legM;
@@ -333,6 +342,16 @@ public final class RouteFollower {
             ClosedPlaces round = closed.isEmpty() ? null : closed;
             Route route = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round)
                     : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round);
+            if (route == null && round != null && reopened < REOPENINGS) {
+                Route through = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM, null)
+                        : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, null);
+                if (through != null) { // the closed places alone blocked the way: they are tried once more
+                    reopened++;
+                    closed = new ClosedPlaces();
+                    stallsInside = 0;
+                    route = through;
+                }
+            }
             if (route == null) {
                 plansWithoutRoute++;
                 xs = null;

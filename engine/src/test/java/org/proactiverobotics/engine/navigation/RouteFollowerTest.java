@@ -167,11 +167,21 @@ class RouteFollowerTest {
         }
         RouteFollower follower = new RouteFollower();
         RouteFollower.Status status = RouteFollower.Status.TARGET;
+        int backOffs = 0;
+        RouteFollower.Status last = status;
         long t;
-        for (t = 0; t <= RouteFollower.STALL_MS + RouteFollower.BACK_OFF_MS + 128 && status != RouteFollower.Status.NO_ROUTE; t += 32) {
+        long limit = (RouteFollower.REOPENINGS + 1) * (RouteFollower.STALL_MS + RouteFollower.BACK_OFF_MS) + 256;
+        for (t = 0; t <= limit && status != RouteFollower.Status.NO_ROUTE; t += 32) {
             status = follower.step(map, -0.3, 0, 0, 2, 0, 0.1, RADIUS_M, t, true);
+            if (status == RouteFollower.Status.BACK_OFF && last != RouteFollower.Status.BACK_OFF) {
+                backOffs++;
+            }
+            last = status;
         }
         assertThat(status).isEqualTo(RouteFollower.Status.NO_ROUTE);
+        // the closed gap alone blocked the goal: it was tried once more, and closed again after a second stall
+        assertThat(backOffs).isEqualTo(RouteFollower.REOPENINGS + 1);
+        assertThat(t).isGreaterThan((RouteFollower.REOPENINGS + 1) * RouteFollower.STALL_MS);
         assertThat(follower.closed().describe()).startsWith("(");
     }
 
