@@ -9,15 +9,15 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
 /**
  * Matches one distance scan against the engine's own occupancy map: point-to-line ICP. Each ray
  * that hit something ends at a point; the point is paired with the occupied cells nearest to it,
- * the line through those cells (their principal direction) is the wall it hit (a point past the
- * cells' end, or near fewer than {@value #MIN_WALL_CELLS} cells, is paired with the nearest cell
- * where the map has seen its place free, and left unpaired where the map knows nothing), and Gauss-Newton
- * moves the pose until the points lie on their walls, in the directions the walls pin only. The
- * result is the pose with its covariance: along a wall the scan says nothing (a corridor), and the
- * covariance says so, so the filter keeps odometry's word there. Chosen over a correlative search because the scan has a dozen rays, each
- * iteration must cost microseconds, and odometry predicts the pose to a few centimetres: a local
- * solver is enough, and its curvature gives the covariance. Scratch arrays are reused, nothing is
- * allocated per match.
+ * and the line through those cells (their principal direction) is the wall it hit. A point past
+ * the cells' end, or near fewer than {@value #MIN_WALL_CELLS} cells, is paired with the nearest
+ * cell where the map has seen its place free, and left unpaired where the map knows nothing.
+ * Gauss-Newton moves the pose until the points lie on their walls, in the directions the walls pin
+ * only. The result is the pose with its covariance: along a wall the scan says nothing (a
+ * corridor), and the covariance says so, so the filter keeps odometry's word there. Chosen over a
+ * correlative search because the scan has a dozen rays, each iteration must cost microseconds, and
+ * odometry predicts the pose to a few millimetres: a local solver is enough, and its curvature
+ * gives the covariance. The matrices and arrays are reused from match to match.
  */
 final class ScanMatcher {
 
