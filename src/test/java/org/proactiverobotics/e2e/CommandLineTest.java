@@ -3,9 +3,13 @@ package org.proactiverobotics.e2e;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import ch.qos.logback.classic.Level;
+import com.google.gson.JsonObject;
+import com.google.gson.JsonParser;
 import ch.qos.logback.classic.Logger;
+import java.io.IOException;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -57,5 +61,14 @@ abstract class CommandLineTest {
         pool.setUser("sa");
         pool.setPassword("");
         return pool;
+    }
+
+    /** @return report.json less what depends on the machine's speed */
+    protected static JsonObject deterministic(Path report) throws IOException {
+        JsonObject o = JsonParser.parseString(Files.readString(report)).getAsJsonObject();
+        o.remove("wallTimeS");
+        o.remove("realTimeFactor");
+        o.remove("timing");
+        return o;
     }
 }

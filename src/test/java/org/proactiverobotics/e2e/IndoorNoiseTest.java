@@ -76,12 +76,4 @@ class IndoorNoiseTest extends CommandLineTest {
         assertThat(err.toString()).contains("outdoor").contains("none, small, realistic, indoor");
         assertThat(outDir).doesNotExist();
     }
-
-    private static JsonObject deterministic(Path report) throws IOException {
-        JsonObject o = JsonParser.parseString(Files.readString(report)).getAsJsonObject();
-        o.remove("wallTimeS");
-        o.remove("realTimeFactor");
-        o.remove("timing");
-        return o;
-    }
 }

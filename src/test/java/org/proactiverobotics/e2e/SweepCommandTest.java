@@ -248,12 +248,4 @@ class SweepCommandTest extends CommandLineTest {
         return result;
     }
 
-    /** report.json less what depends on the machine's speed. */
-    private static JsonObject deterministic(Path report) throws IOException {
-        JsonObject o = JsonParser.parseString(Files.readString(report)).getAsJsonObject();
-        o.remove("wallTimeS");
-        o.remove("realTimeFactor");
-        o.remove("timing");
-        return o;
-    }
 }

@@ -329,6 +329,13 @@ public final class RouteFollower {
         return best;
     }
 
+    /** A plan over seen cells first or with unknown cells free, as this follower plans, round the given places (or none). */
+    private Route plan(OccupancyMap map, double x, double y, double goalX, double goalY, double goalReachM, double robotRadiusM,
+                       ClosedPlaces round) {
+        return overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round)
+                : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round);
+    }
+
     private Status route(OccupancyMap map, double x, double y, double goalX, double goalY, double goalReachM, double robotRadiusM) {
         double sightM = robotRadiusM + RoutePlanner.SIGHT_MARGIN_M;
         int nearest = xs == null ? -1 : nearest(x, y);
@@ -340,11 +347,9 @@ public final class RouteFollower {
         if (plan) {
             sincePlan = 0;
             ClosedPlaces round = closed.isEmpty() ? null : closed;
-            Route route = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round)
-                    : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round);
+            Route route = plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round);
             if (route == null && round != null && reopened < REOPENINGS) {
-                Route through = overSeen ? RoutePlanner.planSeenFirst(map, x, y, goalX, goalY, goalReachM, robotRadiusM, null)
-                        : RoutePlanner.plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, null);
+                Route through = plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, null);
                 if (through != null) { // the closed places alone blocked the way: they are tried once more
                     reopened++;
                     closed = new ClosedPlaces();

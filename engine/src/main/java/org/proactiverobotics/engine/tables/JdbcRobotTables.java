@@ -39,9 +39,11 @@ public final class JdbcRobotTables
     private IterationSnapshot readAhead;
     private List<Object[]> pendingRequests = new ArrayList<>();
     private List<Object[]> pendingMarks = new ArrayList<>();
-    /** The pose estimate the open iteration wrote (its later reads see it), or null. */
+    /** The pose estimate the open iteration wrote, committed with it, or null. */
     private PoseEstimate writtenPose;
-    private long writtenPoseIteration = -1;
+    /** The newest pose estimate as the open iteration knows it (read once, or written): every rule reads the pose. */
+    private Optional<PoseEstimate> iterationPose;
+    private long iterationPoseIteration = Long.MIN_VALUE;
     private long snapshotLoads;
 
     private static final MultiRow INSERT_REQUESTS = MultiRow.insert("sensor_requests", "robot_id", "sensor", "iteration");
@@ -167,15 +169,23 @@ public final class JdbcRobotTables
             e.covXYaw(), e.covYYaw()};
     }
 
+    /** In an iteration, read once and kept for its later reads (this engine alone writes the rows). */
     @Override
     public Optional<PoseEstimate> newestPose() {
-        if (buffering() && writtenPose != null && writtenPoseIteration == transaction.iterationNumber()) {
-            return Optional.of(writtenPose);
+        boolean inIteration = buffering();
+        if (inIteration && iterationPoseIteration == transaction.iterationNumber()) {
+            return iterationPose;
         }
-        return queryOne("newest pose estimate", "SELECT sim_time_ms, x_m, y_m, yaw_rad, var_x, var_y, var_yaw, cov_xy, cov_x_yaw,"
-                + " cov_y_yaw FROM pose_estimate WHERE robot_id = ? ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1",
+        Optional<PoseEstimate> newest = queryOne("newest pose estimate", "SELECT sim_time_ms, x_m, y_m, yaw_rad, var_x, var_y,"
+                + " var_yaw, cov_xy, cov_x_yaw, cov_y_yaw FROM pose_estimate WHERE robot_id = ?"
+                + " ORDER BY robot_id DESC, sim_time_ms DESC, id DESC LIMIT 1",
                 rs -> new PoseEstimate(rs.getLong(1), rs.getDouble(2), rs.getDouble(3), rs.getDouble(4), rs.getDouble(5),
                         rs.getDouble(6), rs.getDouble(7), rs.getDouble(8), rs.getDouble(9), rs.getDouble(10)));
+        if (inIteration) {
+            iterationPose = newest;
+            iterationPoseIteration = transaction.iterationNumber();
+        }
+        return newest;
     }
 
     /** In an iteration, written with its commit (the iteration's later reads see it at once); else at once. */
@@ -183,7 +193,8 @@ public final class JdbcRobotTables
     public void writePose(PoseEstimate estimate) {
         if (buffering()) {
             writtenPose = estimate;
-            writtenPoseIteration = transaction.iterationNumber();
+            iterationPose = Optional.of(estimate);
+            iterationPoseIteration = transaction.iterationNumber();
             return;
         }
         update("writing the pose estimate", INSERT_POSE, poseRow(estimate));
@@ -199,7 +210,8 @@ public final class JdbcRobotTables
         pendingRequests.clear();
         pendingMarks.clear();
         writtenPose = null;
-        writtenPoseIteration = -1;
+        iterationPose = null;
+        iterationPoseIteration = Long.MIN_VALUE;
         snapshot = null;
     }
 

@@ -60,7 +60,7 @@ public final class AvoidObstacles extends Rule {
         SensorReadings readings = ctx.service(SensorReadings.class);
         scan = readings.newestScan().orElse(null);
         heading = readings.newestHeading().orElse(null);
-        position = ctx.findService(PoseEstimateTable.class).flatMap(PoseEstimateTable::newestPose).orElse(null);
+        position = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
     }
 
     /** Guard: distance readings and the heading are known (without a position, hits are not remembered). */

@@ -80,10 +80,9 @@ public final class EstimatePose extends Rule {
         if (!filter.started() && !start(ctx)) {
             return;
         }
-        long newest = Math.max(Math.max(odometryMs, headingMs), gpsMs);
+        double axleM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM();
         if (odometry != null && odometry.simTimeMs() > odometryMs) {
-            double axle = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM();
-            filter.predict(odometry.leftM(), odometry.rightM(), axle);
+            filter.predict(odometry.leftM(), odometry.rightM(), axleM);
             odometryMs = odometry.simTimeMs();
         }
         if (heading != null && heading.simTimeMs() > headingMs) {
@@ -94,7 +93,7 @@ public final class EstimatePose extends Rule {
             filter.correctPosition(gps.xM(), gps.yM(), GPS_SIGMA_M);
             gpsMs = gps.simTimeMs();
         }
-        newest = Math.max(newest, Math.max(Math.max(odometryMs, headingMs), gpsMs));
+        long newest = Math.max(Math.max(odometryMs, headingMs), gpsMs); // the times only grow: this step's newest reading
         // the scan is read only without a fix: with one, a scan that cannot be read costs the estimate nothing
         DistanceScan scan = newest - gpsMs >= GPS_LOST_MS ? ctx.service(SensorReadings.class).newestScan().orElse(null) : null;
         if (scan != null && scan.simTimeMs() > scanMs) {
@@ -102,9 +101,8 @@ public final class EstimatePose extends Rule {
             if (matcher == null) {
                 matcher = new ScanMatcher();
             }
-            double radius = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
             var map = ctx.service(KnownMap.class).current(ctx.iteration(), newest);
-            if (matcher.match(map, filter.x(), filter.y(), filter.yaw(), radius, scan, HIT_SHARE)) {
+            if (matcher.match(map, filter.x(), filter.y(), filter.yaw(), axleM / 2, scan, HIT_SHARE)) {
                 filter.correctPose(matcher.xM, matcher.yM, matcher.yawRad, matcher.covariance);
             }
         }

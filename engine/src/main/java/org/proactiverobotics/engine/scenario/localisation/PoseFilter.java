@@ -51,6 +51,7 @@ final class PoseFilter {
         final DMatrixRMaj[] h = {new DMatrixRMaj(1, 4), new DMatrixRMaj(2, 4), new DMatrixRMaj(3, 4)};
         final DMatrixRMaj[] ph = {new DMatrixRMaj(4, 1), new DMatrixRMaj(4, 2), new DMatrixRMaj(4, 3)};
         final DMatrixRMaj[] sm = {new DMatrixRMaj(1, 1), new DMatrixRMaj(2, 2), new DMatrixRMaj(3, 3)};
+        final DMatrixRMaj[] r = {new DMatrixRMaj(1, 1), new DMatrixRMaj(2, 2), new DMatrixRMaj(3, 3)};
         final DMatrixRMaj[] sInv = {new DMatrixRMaj(1, 1), new DMatrixRMaj(2, 2), new DMatrixRMaj(3, 3)};
         final DMatrixRMaj[] k = {new DMatrixRMaj(4, 1), new DMatrixRMaj(4, 2), new DMatrixRMaj(4, 3)};
         final DMatrixRMaj[] kh = {new DMatrixRMaj(4, 4), new DMatrixRMaj(4, 4), new DMatrixRMaj(4, 4)};
@@ -205,11 +206,13 @@ final class PoseFilter {
         CommonOps_DDRM.multTransB(m.p, h, m.ph[dim]); // P H'
         CommonOps_DDRM.mult(h, m.ph[dim], sMat); // H P H'
         int n = dim + 1;
+        DMatrixRMaj r = m.r[dim];
         for (int i = 0; i < n; i++) {
             for (int j = 0; j < n; j++) {
-                sMat.add(i, j, fullR != null ? fullR[i * n + j] : (i == j ? diagonalR : 0));
+                r.set(i, j, fullR != null ? fullR[i * n + j] : (i == j ? diagonalR : 0));
             }
         }
+        CommonOps_DDRM.addEquals(sMat, r);
         if (!CommonOps_DDRM.invert(sMat, m.sInv[dim])) {
             return; // a measurement that says nothing (singular): keep the prediction
         }
@@ -227,12 +230,6 @@ final class PoseFilter {
         }
         CommonOps_DDRM.mult(m.kh[dim], m.p, m.tmp44);
         CommonOps_DDRM.multTransB(m.tmp44, m.kh[dim], m.p);
-        DMatrixRMaj r = m.sm[dim]; // S is spent: R goes in its place
-        for (int i = 0; i < n; i++) {
-            for (int j = 0; j < n; j++) {
-                r.set(i, j, fullR != null ? fullR[i * n + j] : (i == j ? diagonalR : 0));
-            }
-        }
         CommonOps_DDRM.mult(m.k[dim], r, m.ph[dim]);
         CommonOps_DDRM.multTransB(m.ph[dim], m.k[dim], m.tmp44);
         CommonOps_DDRM.addEquals(m.p, m.tmp44);

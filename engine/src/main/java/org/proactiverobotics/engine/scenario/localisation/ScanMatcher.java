@@ -1,5 +1,6 @@
 package org.proactiverobotics.engine.scenario.localisation;
 
+import java.util.Arrays;
 import org.ejml.data.DMatrixRMaj;
 import org.ejml.dense.row.factory.DecompositionFactory_DDRM;
 import org.ejml.interfaces.decomposition.EigenDecomposition_F64;
@@ -166,8 +167,8 @@ final class ScanMatcher {
         if (!eigen.decompose(normal)) {
             return false;
         }
-        java.util.Arrays.fill(step, 0);
-        java.util.Arrays.fill(scaledCovariance, 0);
+        Arrays.fill(step, 0);
+        Arrays.fill(scaledCovariance, 0);
         boolean constrained = false;
         for (int e = 0; e < 3; e++) {
             double lambda = eigen.getEigenvalue(e).real;
