@@ -20,6 +20,10 @@ import java.util.Objects;
  * @param checkpointRadiusM how close, in metres, the robot's centre must come to a checkpoint
  * @param rechargeStation   the recharge station
  * @param battery           the battery's parameters
+ * @param robots            every robot of the world with its own mission, in the file's order (at least one; the
+ *                          first is {@code robot} with {@code checkpoints}); a one-robot file has one, id
+ *                          {@value #SINGLE_ROBOT_ID}
+ * @param rechargeStations  every recharge station (at least one; the first is {@code rechargeStation})
  */
 public record WorldSpec(
         String name,
@@ -32,7 +36,9 @@ public record WorldSpec(
         List<Checkpoint> checkpoints,
         double checkpointRadiusM,
         RechargeStation rechargeStation,
-        Battery battery) {
+        Battery battery,
+        List<RobotEntry> robots,
+        List<RechargeStation> rechargeStations) {
 
     /** Default {@code timeStepMs}. */
     public static final int DEFAULT_TIME_STEP_MS = 32;
@@ -42,6 +48,8 @@ public record WorldSpec(
     public static final long DEFAULT_SEED = 0L;
     /** Default {@code checkpointRadiusM}. */
     public static final double DEFAULT_CHECKPOINT_RADIUS_M = 0.25;
+    /** The id of the robot of a one-robot world file. */
+    public static final int SINGLE_ROBOT_ID = 1;
 
     /** Copies the lists so that a spec cannot change after construction. */
     public WorldSpec {
@@ -52,6 +60,58 @@ public record WorldSpec(
         checkpoints = List.copyOf(checkpoints);
         Objects.requireNonNull(rechargeStation, "rechargeStation");
         Objects.requireNonNull(battery, "battery");
+        robots = robots == null || robots.isEmpty()
+                ? List.of(new RobotEntry(SINGLE_ROBOT_ID, robot, checkpoints)) : List.copyOf(robots);
+        rechargeStations = rechargeStations == null || rechargeStations.isEmpty()
+                ? List.of(rechargeStation) : List.copyOf(rechargeStations);
+        if (!robots.get(0).robot().equals(robot) || !robots.get(0).checkpoints().equals(checkpoints)) {
+            throw new IllegalArgumentException("robot and checkpoints must be the first of robots");
+        }
+        if (!rechargeStations.get(0).equals(rechargeStation)) {
+            throw new IllegalArgumentException("rechargeStation must be the first of rechargeStations");
+        }
+    }
+
+    /** A one-robot world (robot id {@value #SINGLE_ROBOT_ID}, one recharge station), as every world was before fleets. */
+    public WorldSpec(String name, int timeStepMs, double maxSimTimeS, long seed, Arena arena, Robot robot,
+                     List<Obstacle> obstacles, List<Checkpoint> checkpoints, double checkpointRadiusM,
+                     RechargeStation rechargeStation, Battery battery) {
+        this(name, timeStepMs, maxSimTimeS, seed, arena, robot, obstacles, checkpoints, checkpointRadiusM,
+                rechargeStation, battery, null, null);
+    }
+
+    /**
+     * A world with several robots, each with its own mission, sharing the arena, obstacles and stations.
+     *
+     * @param robots   at least one, ids positive and distinct (not checked here: {@link WorldFiles} validates)
+     * @param stations at least one
+     * @return the world; {@code robot()} and {@code checkpoints()} are the first robot's
+     */
+    public static WorldSpec fleet(String name, int timeStepMs, double maxSimTimeS, long seed, Arena arena,
+                                  List<RobotEntry> robots, List<Obstacle> obstacles, double checkpointRadiusM,
+                                  List<RechargeStation> stations, Battery battery) {
+        RobotEntry first = robots.get(0);
+        return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, first.robot(), obstacles,
+                first.checkpoints(), checkpointRadiusM, stations.get(0), battery, robots, stations);
+    }
+
+    /** @return whether the world has more than one robot */
+    public boolean hasSeveralRobots() {
+        return robots.size() > 1;
+    }
+
+    /**
+     * The world as robot {@code index} alone would see its mission: its robot and checkpoints first, every
+     * station; the other robots are left out (what a robot's own mission rows and drive profile are made from).
+     *
+     * @param index the robot's position in {@link #robots()} (0-based)
+     * @return a one-robot view of this world
+     */
+    public WorldSpec forRobot(int index) {
+        RobotEntry entry = robots.get(index);
+        return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, entry.robot(), obstacles,
+                entry.checkpoints(), checkpointRadiusM, rechargeStations.get(0), battery, List.of(entry),
+                rechargeStations);
     }
 
     /** @return the time step in seconds */
@@ -62,19 +122,21 @@ public record WorldSpec(
     /** @return a copy of this world with other obstacles (for tests and benchmarks) */
     public WorldSpec withObstacles(List<Obstacle> newObstacles) {
         return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, robot, newObstacles, checkpoints,
-                checkpointRadiusM, rechargeStation, battery);
+                checkpointRadiusM, rechargeStation, battery, robots, rechargeStations);
     }
 
     /** @return a copy of this world with another robot (for tests and benchmarks) */
     public WorldSpec withRobot(Robot newRobot) {
+        List<RobotEntry> changed = new java.util.ArrayList<>(robots);
+        changed.set(0, new RobotEntry(robots.get(0).id(), newRobot, checkpoints));
         return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, newRobot, obstacles, checkpoints,
-                checkpointRadiusM, rechargeStation, battery);
+                checkpointRadiusM, rechargeStation, battery, changed, rechargeStations);
     }
 
     /** @return a copy of this world with another battery (for tests and benchmarks) */
     public WorldSpec withBattery(Battery newBattery) {
         return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, robot, obstacles, checkpoints,
-                checkpointRadiusM, rechargeStation, newBattery);
+                checkpointRadiusM, rechargeStation, newBattery, robots, rechargeStations);
     }
 
     /**
@@ -256,6 +318,21 @@ public record WorldSpec(
      * @param y metres
      */
     public record Checkpoint(double x, double y) {
+    }
+
+    /**
+     * One robot of the world and its own mission.
+     *
+     * @param id          the robot's id (positive; its rows' {@code robot_id})
+     * @param robot       its start pose and properties
+     * @param checkpoints its checkpoints, visited in this order (at least one)
+     */
+    public record RobotEntry(int id, Robot robot, List<Checkpoint> checkpoints) {
+        /** Keeps an unmodifiable copy of the checkpoints. */
+        public RobotEntry {
+            Objects.requireNonNull(robot, "robot");
+            checkpoints = List.copyOf(checkpoints);
+        }
     }
 
     /**
