@@ -64,6 +64,9 @@ public final class SvgRenderer {
 
     private static final String[] PALETTE = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
             "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+    /** One colour per robot of a world with several (dark enough to read on white; not the trajectory's palette order). */
+    private static final String[] ROBOT_PALETTE = {"#103060", "#b03060", "#207020", "#a05a00", "#6040a0", "#00707a",
+            "#704020", "#505050"};
     private static final double MARGIN_M = 0.6;
     private static final int SIZE_PX = 800;
 
@@ -222,13 +225,26 @@ public final class SvgRenderer {
     }
 
     private void station(StringBuilder sb, double font) {
-        WorldSpec.RechargeStation s = spec.rechargeStation();
-        sb.append(f("<g id=\"station\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#c8f0c8\" stroke=\"#2a8a2a\" stroke-width=\"0.03\"/>"
-                        + "<text x=\"%s\" y=\"%s\" text-anchor=\"middle\" fill=\"#2a8a2a\">recharge</text></g>\n",
-                n(s.x()), n(-s.y()), n(s.radiusM()), n(s.x()), n(-s.y() - s.radiusM() - font * 0.4)));
+        if (spec.rechargeStations().size() == 1) {
+            station(sb, font, spec.rechargeStation(), "station", "recharge");
+            return;
+        }
+        for (int i = 0; i < spec.rechargeStations().size(); i++) {
+            station(sb, font, spec.rechargeStations().get(i), "station-" + (i + 1), "recharge " + (i + 1));
+        }
+    }
+
+    private void station(StringBuilder sb, double font, WorldSpec.RechargeStation s, String id, String label) {
+        sb.append(f("<g id=\"%s\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#c8f0c8\" stroke=\"#2a8a2a\" stroke-width=\"0.03\"/>"
+                        + "<text x=\"%s\" y=\"%s\" text-anchor=\"middle\" fill=\"#2a8a2a\">%s</text></g>\n",
+                esc(id), n(s.x()), n(-s.y()), n(s.radiusM()), n(s.x()), n(-s.y() - s.radiusM() - font * 0.4), esc(label)));
     }
 
     private void checkpoints(StringBuilder sb) {
+        if (spec.hasSeveralRobots()) {
+            fleetCheckpoints(sb);
+            return;
+        }
         sb.append("<g id=\"checkpoints\">\n");
         for (WorldSpec.Checkpoint c : spec.checkpoints()) {
             sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#fff3c4\" stroke=\"#c08a00\" stroke-width=\"0.03\" stroke-dasharray=\"0.06 0.04\"/>\n",
@@ -237,14 +253,51 @@ public final class SvgRenderer {
         sb.append("</g>\n");
     }
 
+    /** Every robot's checkpoints, outlined in that robot's colour. */
+    private void fleetCheckpoints(StringBuilder sb) {
+        sb.append("<g id=\"checkpoints\">\n");
+        for (int k = 0; k < spec.robots().size(); k++) {
+            for (WorldSpec.Checkpoint c : spec.robots().get(k).checkpoints()) {
+                sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#fff3c4\" stroke=\"%s\" stroke-width=\"0.03\" stroke-dasharray=\"0.06 0.04\"/>\n",
+                        n(c.x()), n(-c.y()), n(spec.checkpointRadiusM()), robotColour(k)));
+            }
+        }
+        sb.append("</g>\n");
+    }
+
+    /** The colour of the robot at index k of {@link WorldSpec#robots()}: its start, checkpoints and labels. */
+    private static String robotColour(int k) {
+        return ROBOT_PALETTE[k % ROBOT_PALETTE.length];
+    }
+
     /** The checkpoints' numbers, above each circle by more than the robot's radius: a robot on it never hides them. */
     private void checkpointLabels(StringBuilder sb, double font) {
+        if (spec.hasSeveralRobots()) {
+            fleetCheckpointLabels(sb);
+            return;
+        }
         sb.append("<g id=\"checkpoint-labels\" fill=\"#805c00\" font-weight=\"bold\" text-anchor=\"middle\""
                 + " stroke=\"white\" stroke-width=\"0.05\" paint-order=\"stroke\">\n");
         List<WorldSpec.Checkpoint> cps = spec.checkpoints();
         for (int i = 0; i < cps.size(); i++) {
             WorldSpec.Checkpoint c = cps.get(i);
             sb.append(f("  <text x=\"%s\" y=\"%s\">%d</text>\n", n(c.x()), n(-c.y() - labelOffsetM()), i + 1));
+        }
+        sb.append("</g>\n");
+    }
+
+    /** Each robot's checkpoints numbered from 1 in visiting order, "robot id.number", in the robot's colour. */
+    private void fleetCheckpointLabels(StringBuilder sb) {
+        sb.append("<g id=\"checkpoint-labels\" font-weight=\"bold\" text-anchor=\"middle\""
+                + " stroke=\"white\" stroke-width=\"0.05\" paint-order=\"stroke\">\n");
+        for (int k = 0; k < spec.robots().size(); k++) {
+            WorldSpec.RobotEntry entry = spec.robots().get(k);
+            double offset = spec.checkpointRadiusM() + entry.robot().radiusM() + 0.05;
+            for (int i = 0; i < entry.checkpoints().size(); i++) {
+                WorldSpec.Checkpoint c = entry.checkpoints().get(i);
+                sb.append(f("  <text x=\"%s\" y=\"%s\" fill=\"%s\">%d.%d</text>\n", n(c.x()), n(-c.y() - offset),
+                        robotColour(k), entry.id(), i + 1));
+            }
         }
         sb.append("</g>\n");
     }
@@ -256,6 +309,13 @@ public final class SvgRenderer {
 
     /** Where the robot started: a hollow disc with its heading, labelled. */
     private void start(StringBuilder sb, double font) {
+        if (spec.hasSeveralRobots()) {
+            for (int k = 0; k < spec.robots().size(); k++) {
+                WorldSpec.RobotEntry entry = spec.robots().get(k);
+                startOf(sb, font, entry.robot(), "start-" + entry.id(), robotColour(k), "robot " + entry.id());
+            }
+            return;
+        }
         WorldSpec.Robot r = spec.robot();
         double heading = Math.toRadians(r.headingDeg());
         sb.append(f("<g id=\"start\" stroke=\"#103060\" stroke-width=\"0.03\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"white\"/>"
@@ -263,6 +323,17 @@ public final class SvgRenderer {
                         + "<text x=\"%s\" y=\"%s\" stroke=\"none\" fill=\"#103060\" dominant-baseline=\"central\">start</text></g>\n",
                 n(r.x()), n(-r.y()), n(r.radiusM()), n(r.x()), n(-r.y()), n(r.x() + r.radiusM() * Math.cos(heading)),
                 n(-(r.y() + r.radiusM() * Math.sin(heading))), n(r.x() + r.radiusM() + font * 0.4), n(-r.y())));
+    }
+
+    /** One robot's start in a world of several: a hollow disc with its heading, in its colour, labelled with its id. */
+    private void startOf(StringBuilder sb, double font, WorldSpec.Robot r, String id, String colour, String label) {
+        double heading = Math.toRadians(r.headingDeg());
+        sb.append(f("<g id=\"%s\" stroke=\"%s\" stroke-width=\"0.03\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"white\"/>"
+                        + "<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/>"
+                        + "<text x=\"%s\" y=\"%s\" stroke=\"none\" fill=\"%s\" dominant-baseline=\"central\">%s</text></g>\n",
+                esc(id), colour, n(r.x()), n(-r.y()), n(r.radiusM()), n(r.x()), n(-r.y()),
+                n(r.x() + r.radiusM() * Math.cos(heading)), n(-(r.y() + r.radiusM() * Math.sin(heading))),
+                n(r.x() + r.radiusM() + font * 0.4), n(-r.y()), colour, esc(label)));
     }
 
     /** A 1 m bar at the bottom left, labelled. */
