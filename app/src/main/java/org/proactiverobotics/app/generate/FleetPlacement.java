@@ -83,7 +83,10 @@ final class FleetPlacement {
             missions.add(mission);
             for (int c = 0; c < perRobot; c++) {
                 WorldSpec.Robot anchor = starts.get((k + 1 + c) % robots == k ? (k + 2 + c) % robots : (k + 1 + c) % robots);
-                double[] p = near(anchor.x(), anchor.y(), checkpointRadiusM + radiusM + MARGIN_M, this::checkpointFits);
+                WorldSpec.Robot own = starts.get(k);
+                // nearer the other's start than its own: the robot drives over to where the other comes from
+                double[] p = near(anchor.x(), anchor.y(), checkpointRadiusM + radiusM + MARGIN_M, (x, y) -> checkpointFits(x, y)
+                        && Math.hypot(anchor.x() - x, anchor.y() - y) < Math.hypot(own.x() - x, own.y() - y));
                 if (p == null) {
                     return null;
                 }
