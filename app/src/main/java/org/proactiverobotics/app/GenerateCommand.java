@@ -81,7 +81,8 @@ public final class GenerateCommand implements Callable<Integer> {
                 worlds.add(generator.world(seed, i, robots));
             }
         } catch (IllegalStateException e) { // nothing is written before every world is drawn
-            err.println(e.getMessage() + " for a robot of radius " + robotRadiusM + " m: try another --seed or --robot-radius");
+            err.println(e.getMessage() + " for a robot of radius " + robotRadiusM + " m: try another --seed or --robot-radius"
+                    + (robots > 1 ? ", or fewer --robots" : ""));
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
