@@ -15,7 +15,8 @@ import java.util.Objects;
  * Draws a world to SVG: arena, obstacles, numbered checkpoints, the recharge station, the start pose, a 1 m
  * scale bar, and optionally the robot (heading and sensor rays), a trajectory coloured by category (for
  * instance which scenario's command was driving; one colour per category) and labelled markers (for instance
- * recharge stops).
+ * recharge stops). In a world of several robots every robot's start and checkpoints are drawn in a colour of its
+ * own, every station numbered, and {@link #robotPath} and {@link #robotAt} draw each robot's path and body.
  * <p>
  * World coordinates are metres with +y up; the picture flips y so that it looks as the world does.
  * Usage: {@code new SvgRenderer(spec).robot(sim).trajectory(points).render()}.
@@ -74,6 +75,10 @@ public final class SvgRenderer {
     private final Map<String, String> colours = new LinkedHashMap<>();
     private final List<TrajectoryPoint> trajectory = new ArrayList<>();
     private final List<Marker> markers = new ArrayList<>();
+    /** Each robot's path in a world of several, by its index in {@link WorldSpec#robots()}. */
+    private final Map<Integer, List<TrajectoryPoint>> robotPaths = new java.util.TreeMap<>();
+    /** Each robot's body in a world of several, by its index. */
+    private final Map<Integer, RobotPose> robotPoses = new java.util.TreeMap<>();
     private RobotPose robot;
     private String title;
 
@@ -111,6 +116,31 @@ public final class SvgRenderer {
     /** Adds a path, drawn in order, coloured by each point's category. */
     public SvgRenderer trajectory(List<TrajectoryPoint> points) {
         trajectory.addAll(points);
+        return this;
+    }
+
+    /**
+     * In a world of several robots, adds one robot's path, drawn in that robot's colour (the points' categories
+     * are not drawn: the colour says whose path it is).
+     *
+     * @param robotIndex the robot's index in {@link WorldSpec#robots()}
+     * @param points     its path, in order
+     */
+    public SvgRenderer robotPath(int robotIndex, List<TrajectoryPoint> points) {
+        Objects.checkIndex(robotIndex, spec.robots().size());
+        robotPaths.computeIfAbsent(robotIndex, k -> new ArrayList<>()).addAll(points);
+        return this;
+    }
+
+    /**
+     * In a world of several robots, draws one robot's body (its radius) in its colour, with its rays if the pose has any.
+     *
+     * @param robotIndex the robot's index in {@link WorldSpec#robots()}
+     * @param pose       where it is
+     */
+    public SvgRenderer robotAt(int robotIndex, RobotPose pose) {
+        Objects.checkIndex(robotIndex, spec.robots().size());
+        robotPoses.put(robotIndex, pose);
         return this;
     }
 
@@ -196,8 +226,10 @@ public final class SvgRenderer {
         checkpoints(sb);
         start(sb, font);
         trajectory(sb);
+        robotPaths(sb);
         markers(sb, font);
         robot(sb);
+        robotBodies(sb);
         checkpointLabels(sb, font); // after the robot, which ends on the last checkpoint
         scaleBar(sb, v, font);
         legend(sb, v, font);
@@ -370,6 +402,35 @@ public final class SvgRenderer {
         sb.append("</g>\n");
     }
 
+    private void robotPaths(StringBuilder sb) {
+        for (Map.Entry<Integer, List<TrajectoryPoint>> e : robotPaths.entrySet()) {
+            if (e.getValue().isEmpty()) {
+                continue;
+            }
+            sb.append(f("<polyline id=\"path-%d\" fill=\"none\" stroke=\"%s\" stroke-width=\"0.04\" stroke-linejoin=\"round\""
+                    + " stroke-linecap=\"round\" points=\"", spec.robots().get(e.getKey()).id(), robotColour(e.getKey())));
+            for (TrajectoryPoint p : e.getValue()) {
+                sb.append(n(p.x())).append(',').append(n(-p.y())).append(' ');
+            }
+            sb.append("\"/>\n");
+        }
+    }
+
+    private void robotBodies(StringBuilder sb) {
+        for (Map.Entry<Integer, RobotPose> e : robotPoses.entrySet()) {
+            RobotPose pose = e.getValue();
+            double rr = spec.robots().get(e.getKey()).robot().radiusM();
+            sb.append(f("<g id=\"robot-%d\">\n", spec.robots().get(e.getKey()).id()));
+            rays(sb, pose, rr);
+            sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"%s\" stroke=\"#103060\" stroke-width=\"0.02\"/>\n",
+                    n(pose.x()), n(-pose.y()), n(rr), robotColour(e.getKey())));
+            sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"white\" stroke-width=\"0.03\"/>\n",
+                    n(pose.x()), n(-pose.y()), n(pose.x() + rr * Math.cos(pose.headingRad())),
+                    n(-(pose.y() + rr * Math.sin(pose.headingRad())))));
+            sb.append("</g>\n");
+        }
+    }
+
     private String colourOf(String category) {
         String key = category == null ? "" : category;
         return colours.computeIfAbsent(key, k -> {
@@ -403,20 +464,25 @@ public final class SvgRenderer {
         double x = robot.x();
         double y = robot.y();
         sb.append("<g id=\"robot\">\n");
-        for (int i = 0; i < robot.rayAnglesRad().length; i++) {
-            double a = robot.headingRad() + robot.rayAnglesRad()[i];
-            double len = robot.rayLengthsM()[i];
-            double x0 = x + rr * Math.cos(a);
-            double y0 = y + rr * Math.sin(a);
-            boolean hit = len < robot.rangeM();
-            sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"0.015\"/>\n",
-                    n(x0), n(-y0), n(x0 + len * Math.cos(a)), n(-(y0 + len * Math.sin(a))), hit ? "#e03030" : "#9ab"));
-        }
+        rays(sb, robot, rr);
         sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#3070d0\" stroke=\"#103060\" stroke-width=\"0.02\"/>\n",
                 n(x), n(-y), n(rr)));
         sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"white\" stroke-width=\"0.03\"/>\n",
                 n(x), n(-y), n(x + rr * Math.cos(robot.headingRad())), n(-(y + rr * Math.sin(robot.headingRad())))));
         sb.append("</g>\n");
+    }
+
+    /** One line per distance sensor from the rim, red where it hit something. */
+    private void rays(StringBuilder sb, RobotPose pose, double rr) {
+        for (int i = 0; i < pose.rayAnglesRad().length; i++) {
+            double a = pose.headingRad() + pose.rayAnglesRad()[i];
+            double len = pose.rayLengthsM()[i];
+            double x0 = pose.x() + rr * Math.cos(a);
+            double y0 = pose.y() + rr * Math.sin(a);
+            boolean hit = len < pose.rangeM();
+            sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"0.015\"/>\n",
+                    n(x0), n(-y0), n(x0 + len * Math.cos(a)), n(-(y0 + len * Math.sin(a))), hit ? "#e03030" : "#9ab"));
+        }
     }
 
     private void legend(StringBuilder sb, View v, double font) {

@@ -3,9 +3,13 @@ package org.proactiverobotics.sim2d;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.util.HexFormat;
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -177,6 +181,40 @@ class FleetWorldFilesTest {
         assertThat(svg).contains("fill=\"#103060\">1.1</text>", "fill=\"#b03060\">2.1</text>", "fill=\"#b03060\">2.2</text>");
         assertThat(svg.split("stroke-dasharray", -1)).hasSize(4);
         assertThat(svg).doesNotContain("<g id=\"start\" ", "<g id=\"station\">");
+    }
+
+    @Test
+    void eachRobotsPathAndBodyAreDrawnInItsColourAndSize() {
+        WorldSpec w = WorldFiles.parse(FLEET);
+        String svg = new SvgRenderer(w)
+                .robotPath(1, List.of(new SvgRenderer.TrajectoryPoint(3.0, 0.5, "Move"), new SvgRenderer.TrajectoryPoint(2.0, 0.5, "Move")))
+                .robotAt(1, new SvgRenderer.RobotPose(2.0, 0.5, Math.PI, new double[] {0.0}, new double[] {0.4}, 1.0))
+                .render();
+        assertThat(svg).contains("<polyline id=\"path-2\" fill=\"none\" stroke=\"#b03060\"", "points=\"3.000,-0.500 2.000,-0.500 \"",
+                "<g id=\"robot-2\">", "r=\"0.150\" fill=\"#b03060\"", "stroke=\"#e03030\"");
+        assertThat(svg).doesNotContain("path-1", "robot-1", "<g id=\"trajectory\"");
+    }
+
+    /**
+     * A one-robot picture is byte for byte what it was before fleets: the SHA-256 of each bundled world drawn with a
+     * trajectory, a marker and a robot with rays, taken from main's jar before fleets (commit dca69ff).
+     */
+    @Test
+    void oneRobotPicturesAreByteForByteAsBeforeFleets() throws Exception {
+        Map<String, String> before = Map.of(
+                "reference-arena", "aa6c9b9ce2df159c5c04107c542620ae828f869f9b49007086dfb6f359d706ec",
+                "obstacle-across-path", "4e3b9081a8591fbc0de69367a6cf09c3b45648a083fe41044c973c5bdca581c0",
+                "cluttered-arena", "f50c5bfec1d711ae75bef13d5d48aa5897cf21e045be5a221fb874aa05e64169",
+                "low-battery", "e33e5a5213361e12417484a0144a24507f7671ad3b05f8bddf95777c67349324");
+        for (Map.Entry<String, String> world : before.entrySet()) {
+            String svg = new SvgRenderer(WorldFiles.bundled(world.getKey()))
+                    .trajectory(List.of(new SvgRenderer.TrajectoryPoint(0, -4, "Move"), new SvgRenderer.TrajectoryPoint(0.5, -3, "Avoid")))
+                    .marker(1, 1, "recharge 1")
+                    .robot(new SvgRenderer.RobotPose(0.5, -3, 1.0, new double[] {-0.5, 0.5}, new double[] {0.3, 1.0}, 1.0))
+                    .render();
+            byte[] sha = MessageDigest.getInstance("SHA-256").digest(svg.getBytes(StandardCharsets.UTF_8));
+            assertThat(HexFormat.of().formatHex(sha)).as(world.getKey()).isEqualTo(world.getValue());
+        }
     }
 
     @Test
