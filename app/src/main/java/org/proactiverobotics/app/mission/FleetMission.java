@@ -114,8 +114,9 @@ final class FleetMission {
     /** One robot's engine: its id, its own robot's drive profile, this mission's plug-ins, its own tracer. */
     private RobotEngine.Builder engine(FleetLane lane) {
         WorldSpec.Robot robot = options.world().robots().get(lane.index).robot();
+        // each robot shares the world with the others: the map lets moving obstacles go, Yield runs
         return RobotEngine.builder().robotId(lane.robotId).drive(new DriveProfile(robot.maxSpeedMps(), 2 * robot.radiusM()))
-                .plugins(options.plugins()).observer(lane::decided).belief(lane.belief)
+                .sharedWorld(true).plugins(options.plugins()).observer(lane::decided).belief(lane.belief)
                 .decorate(tables -> SeenReadings.wrap(engineTables.apply(tables), r -> lane.seen = r));
     }
 
@@ -123,7 +124,7 @@ final class FleetMission {
             throws IOException {
         for (FleetLane lane : lanes) {
             lane.engine.startFresh();
-            lane.engine.writeStrategy(options.strategy());
+            lane.engine.writeStrategy(options.strategy().forSharedWorld()); // Yield right below the collision monitor
             lane.controller = new ProactiveController(sim, lane.index, links.get(),
                     RobotConfig.defaults(lane.robotId));
             lane.controller.onCommand(command -> lane.commandWins.merge(command.scenario(), 1L, Long::sum));
