@@ -46,8 +46,8 @@ public final class UpdateMap extends Rule {
      */
     static final double UNCLEARED_M = 0.04;
     /**
-     * In a shared world, a ray clears even a wall-for-good cell it crossed at least this far before
-     * its end, metres: an obstacle that moved away is seen through, while a ray that ends in a wall's
+     * In a shared world, a ray that hit something clears even a wall-for-good cell it crossed at
+     * least this far before its end (a ray that hit nothing, every cell it crossed), metres: an obstacle that moved away is seen through, while a ray that ends in a wall's
      * cell, or crosses the free corner of one on its way into the wall, is no proof it is empty.
      */
     static final double CLEAR_BEFORE_END_M = 0.15;
@@ -56,6 +56,8 @@ public final class UpdateMap extends Rule {
 
     /** The simulated time of the last scan added, ms (-1: none yet). */
     private long lastScanMs = -1;
+    /** In a shared world, the cells something moved into (null for a lone robot: nothing saved). */
+    private MovingCells moving;
 
     /** The map as stored, loaded on the first run after a start or a resume. */
     private transient OccupancyMap map;
@@ -97,7 +99,15 @@ public final class UpdateMap extends Rule {
             map = OccupancyMap.of(table.readMap());
         }
         double radiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
-        addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan, ctx.findService(SharedWorld.class).isPresent());
+        if (ctx.findService(SharedWorld.class).isPresent()) {
+            if (moving == null) {
+                moving = new MovingCells();
+            }
+            addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan, moving);
+            moving.decay(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan);
+        } else {
+            addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan);
+        }
         lastScanMs = scan.simTimeMs();
         List<MapChunk> changed = map.takeChanged();
         if (!changed.isEmpty()) {
@@ -122,7 +132,7 @@ public final class UpdateMap extends Rule {
      * @param scan    the scan
      */
     public static void addScan(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, DistanceScan scan) {
-        addScan(map, xM, yM, yawRad, radiusM, scan, false);
+        addScan(map, xM, yM, yawRad, radiusM, scan, null);
     }
 
     /**
@@ -134,10 +144,12 @@ public final class UpdateMap extends Rule {
      * @param yawRad  its heading, radians
      * @param radiusM its body's radius (the rays start at the rim), metres
      * @param scan    the scan
-     * @param shared  other robots move in this world: rays clear what they see through, walls for good included
+     * @param moving  in a world shared with other robots, the cells something moved into (rays clear what they
+     *                see through, walls for good included, and a hit on a cell seen free is followed here);
+     *                null for a lone robot
      */
-    public static void addScan(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, DistanceScan scan,
-                               boolean shared) {
+    static void addScan(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, DistanceScan scan,
+                        MovingCells moving) {
         for (int k = 0; k < scan.anglesRad().length; k++) {
             double d = scan.distancesM()[k];
             if (!(d >= 0) || !Double.isFinite(d)) {
@@ -148,13 +160,13 @@ public final class UpdateMap extends Rule {
             double reach = radiusM + Math.min(d, scan.rangeM());
             double ex = xM + Math.cos(a) * reach;
             double ey = yM + Math.sin(a) * reach;
-            traverse(map, xM, yM, ex, ey, hit, hit && d < scan.rangeM() * CLOSE_HIT, shared);
+            traverse(map, xM, yM, ex, ey, hit, hit && d < scan.rangeM() * CLOSE_HIT, moving);
         }
     }
 
     /** Walks the cells from (x0, y0) to (x1, y1) (Amanatides-Woo): free on the way, the last occupied on a hit. */
     private static void traverse(OccupancyMap map, double x0, double y0, double x1, double y1, boolean hit, boolean close,
-                                 boolean shared) {
+                                 MovingCells moving) {
         int i = OccupancyMap.cell(x0);
         int j = OccupancyMap.cell(y0);
         int ei = OccupancyMap.cell(x1);
@@ -172,7 +184,8 @@ public final class UpdateMap extends Rule {
         // a hit's last few centimetres may lie inside the wall (a reading a little long): not cleared
         double keepFrom = hit ? 1.0 - UNCLEARED_M / Math.hypot(dx, dy) : Double.POSITIVE_INFINITY;
         // in a shared world, the cells left well behind before the ray's end are seen through: cleared, walls for good too
-        double clearBefore = shared ? 1.0 - CLEAR_BEFORE_END_M / Math.hypot(dx, dy) : Double.NEGATIVE_INFINITY;
+        // (a ray that hit nothing saw through every cell it crossed, its last one too)
+        double clearBefore = moving == null ? Double.NEGATIVE_INFINITY : hit ? 1.0 - CLEAR_BEFORE_END_M / Math.hypot(dx, dy) : 2.0;
         double entered = 0.0;
         double left = Math.min(nextX, nextY);
         while ((i != ei || j != ej) && guard-- > 0) {
@@ -192,10 +205,15 @@ public final class UpdateMap extends Rule {
             }
             left = Math.min(nextX, nextY);
         }
+        if (moving != null && hit && map.get(ei, ej) == OccupancyMap.FREE) {
+            moving.add(ei, ej); // seen free, now hit: something moved in
+        }
         if (close) {
             map.confirm(ei, ej);
         } else if (hit) {
             map.hit(ei, ej);
+        } else if (moving != null) {
+            map.clear(ei, ej);
         } else {
             map.miss(ei, ej);
         }

@@ -13,9 +13,11 @@ import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
- * Gives way to something that came at the robot head-on: backs off straight for
- * {@value #BACK_MS} ms (toward the wider place it came from; it stops backing when its map shows
- * something behind), then waits, stopped, for a time its own robot id sets ({@link #waitMs}), and
+ * Gives way to something that came at the robot head-on: backs off straight for at least
+ * {@value #BACK_MS} ms and on while both sides are narrow (a corridor: the rays at
+ * {@value #SIDE_DEG}° and beyond read less than {@value #WIDE_M} m on the left and on the right),
+ * at most {@value #BACK_MAX_MS} ms, so that it leaves a corridor for a wider place the other can
+ * pass it in (it stops backing when its map shows something behind), then waits, stopped, for a time its own robot id sets ({@link #waitMs}), and
  * hands back to {@link WatchTraffic}. Two robots that meet both give way, and the one with the
  * shorter wait goes first; the other, still waiting, sees it come and backs off again, until it
  * is out of the way. Something that comes again while the robot waits starts the backing again.
@@ -25,16 +27,26 @@ public final class GiveWay extends Rule {
 
     /** How long the robot backs off each time something comes, simulated ms. */
     static final long BACK_MS = 1_500;
-    /** Backing speed, as a share of the top speed (the rays look ahead: it backs over the way it came, slowly). */
-    static final double BACK_SPEED = 0.4;
+    /** Backing on in a narrow place stops after this long all told, simulated ms. */
+    static final long BACK_MAX_MS = 12_000;
+    /** Backing speed, as a share of the top speed (the rays look ahead: it backs over the way it came). */
+    static final double BACK_SPEED = 0.6;
+    /** Rays this far or farther from the heading look sideways, degrees. */
+    static final double SIDE_DEG = 60;
+    /** A side is narrow when a sideways ray reads less than this from the rim, metres (0.18 m in a 0.6 m corridor). */
+    static final double WIDE_M = 0.4;
     /** The shortest wait after backing off, simulated ms. */
     static final long WAIT_BASE_MS = 800;
     /** Each robot id waits this much longer than the one before, simulated ms (ids 1..{@value #WAIT_IDS} wait apart). */
     static final long WAIT_STEP_MS = 1_200;
     /** Waits repeat every this many ids. */
     static final int WAIT_IDS = 6;
+    /** Turn rate per metre of difference between the two sides while backing between walls, rad/s per metre. */
+    static final double CENTRING_GAIN = 2.0;
+    /** The fastest centring turn, rad/s. */
+    static final double MAX_CENTRING_RAD_S = 0.8;
     /** The robot does not back into a cell its map has occupied within its radius plus this, metres. */
-    static final double BEHIND_MARGIN_M = 0.03;
+    static final double BEHIND_MARGIN_M = 0.01;
     /** The map is looked at this far behind the robot, metres. */
     static final double BEHIND_LOOK_M = 0.1;
 
@@ -43,6 +55,8 @@ public final class GiveWay extends Rule {
     private long backUntilMs = -1;
     /** Until when it waits, simulated ms. */
     private long waitUntilMs;
+    /** Since when it backs off this time, simulated ms. */
+    private long backFromMs;
     private boolean done;
 
     private transient PoseEstimate pose;
@@ -92,16 +106,22 @@ public final class GiveWay extends Rule {
         long now = pose.simTimeMs();
         boolean coming = scan != null && Math.abs(scan.simTimeMs() - now) <= WatchTraffic.SAME_MOMENT_MS && oncoming.observe(pose, scan);
         if (backUntilMs < 0 || (coming && now >= backUntilMs)) {
+            backFromMs = now;
             backUntilMs = now + BACK_MS; // (again): it came on while the robot waited
-            waitUntilMs = backUntilMs + waitMs(ctx.robotId());
+        }
+        if (now >= backUntilMs && now - backFromMs < BACK_MAX_MS && backUntilMs > backFromMs && narrow()) {
+            backUntilMs = now + 1; // still between two walls: on out of the corridor
         }
         if (now < backUntilMs) {
+            waitUntilMs = backUntilMs + waitMs(ctx.robotId());
             DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
             if (blockedBehind(ctx, profile)) {
                 backUntilMs = now; // nowhere to back to: wait where it is
+                backFromMs = now;
+                waitUntilMs = now + waitMs(ctx.robotId());
                 ctx.suggest(Steering.STOP);
             } else {
-                ctx.suggest(Steering.drive(-BACK_SPEED * profile.maxSpeedMps(), 0.0, profile));
+                ctx.suggest(Steering.drive(-BACK_SPEED * profile.maxSpeedMps(), centring(), profile));
             }
             return;
         }
@@ -109,6 +129,44 @@ public final class GiveWay extends Rule {
         if (!done) {
             ctx.suggest(Steering.STOP);
         }
+    }
+
+    /**
+     * @return the turn rate that keeps the robot backing in the middle between two walls (rad/s, counter-clockwise
+     *         positive: backing, a turn to the right moves it left), 0 where a side is open
+     */
+    private double centring() {
+        double[] sides = sides();
+        if (!(sides[0] < WIDE_M && sides[1] < WIDE_M)) {
+            return 0.0;
+        }
+        return Math.max(-MAX_CENTRING_RAD_S, Math.min(MAX_CENTRING_RAD_S, CENTRING_GAIN * (sides[1] - sides[0])));
+    }
+
+    /** Whether both sides are narrow, as the sideways rays read them now. */
+    private boolean narrow() {
+        double[] sides = sides();
+        return sides[0] < WIDE_M && sides[1] < WIDE_M;
+    }
+
+    /** @return the nearest reading of the sideways rays on the left and on the right, metres (+∞ with no scan) */
+    private double[] sides() {
+        if (scan == null) {
+            return new double[] {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY};
+        }
+        double left = Double.POSITIVE_INFINITY;
+        double right = Double.POSITIVE_INFINITY;
+        double side = Math.toRadians(SIDE_DEG);
+        for (int k = 0; k < scan.anglesRad().length; k++) {
+            double a = scan.anglesRad()[k];
+            double d = scan.distancesM()[k];
+            if (a >= side) {
+                left = Math.min(left, d);
+            } else if (a <= -side) {
+                right = Math.min(right, d);
+            }
+        }
+        return new double[] {left, right};
     }
 
     /** Whether the map has something occupied right behind the robot, within its radius. */
