@@ -18,6 +18,8 @@ final class MovingCells {
 
     /** Out of view, a cell loses one unit of evidence every this many scans (evidence 6: gone in 1.5 s at 32 ms). */
     static final int DECAY_EVERY = 8;
+    /** Occupied cells this many cells round a moved-in one are taken as the same body (0.1 m). */
+    static final int NEIGHBOURS = 2;
     /** The most cells followed. */
     static final int CAPACITY = 1024;
     /** A cell within this angle beyond the outermost rays still counts as in view, radians. */
@@ -26,6 +28,22 @@ final class MovingCells {
     private long[] cells = new long[64];
     private int count;
     private int scans;
+
+    /**
+     * Follows a cell that a ray hit after the rays had seen it free, and the occupied cells within
+     * {@value #NEIGHBOURS} cells of it: the same body's side, first hit at the edge of the range
+     * where nothing had been seen yet (left behind, it stood in a corridor for good).
+     */
+    void addWithNeighbours(OccupancyMap map, int i, int j) {
+        add(i, j);
+        for (int b = -NEIGHBOURS; b <= NEIGHBOURS; b++) {
+            for (int a = -NEIGHBOURS; a <= NEIGHBOURS; a++) {
+                if ((a != 0 || b != 0) && map.get(i + a, j + b) == OccupancyMap.OCCUPIED) {
+                    add(i + a, j + b);
+                }
+            }
+        }
+    }
 
     /** Follows a cell that a ray hit after the rays had seen it free. */
     void add(int i, int j) {

@@ -206,7 +206,7 @@ public final class UpdateMap extends Rule {
             left = Math.min(nextX, nextY);
         }
         if (moving != null && hit && map.get(ei, ej) == OccupancyMap.FREE) {
-            moving.add(ei, ej); // seen free, now hit: something moved in
+            moving.addWithNeighbours(map, ei, ej); // seen free, now hit: something moved in
         }
         if (close) {
             map.confirm(ei, ej);

@@ -13,11 +13,13 @@ import org.proactiverobotics.engine.tables.PoseEstimateTable;
 import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
- * Gives way to something that came at the robot head-on: backs off straight for at least
+ * Gives way to something that came at the robot head-on. Between two walls (a corridor, a door)
+ * it backs off for at least
  * {@value #BACK_MS} ms and on while both sides are narrow (a corridor: the rays at
  * {@value #SIDE_DEG}° and beyond read less than {@value #WIDE_M} m on the left and on the right),
  * at most {@value #BACK_MAX_MS} ms, so that it leaves a corridor for a wider place the other can
- * pass it in (it stops backing when its map shows something behind), then waits, stopped, for a time its own robot id sets ({@link #waitMs}), and
+ * pass it in (it stops backing when its map shows something behind); in the open it does not back
+ * off (that costs battery, and the other's route goes round a robot that stands still). Then it waits, stopped, for a time its own robot id sets ({@link #waitMs}), and
  * hands back to {@link WatchTraffic}. Two robots that meet both give way, and the one with the
  * shorter wait goes first; the other, still waiting, sees it come and backs off again, until it
  * is out of the way. Something that comes again while the robot waits starts the backing again.
@@ -104,10 +106,13 @@ public final class GiveWay extends Rule {
     @Override
     protected void actions(RuleContext ctx) {
         long now = pose.simTimeMs();
-        boolean coming = scan != null && Math.abs(scan.simTimeMs() - now) <= WatchTraffic.SAME_MOMENT_MS && oncoming.observe(pose, scan);
+        boolean coming = scan != null && Math.abs(scan.simTimeMs() - now) <= WatchTraffic.SAME_MOMENT_MS && oncoming.observe(pose, scan, WatchTraffic.radiusM(ctx));
         if (backUntilMs < 0 || (coming && now >= backUntilMs)) {
+            // (again: it came on while the robot waited) between two walls it backs out; in the open it
+            // only stops, which costs no battery, and the other's route goes round it
             backFromMs = now;
-            backUntilMs = now + BACK_MS; // (again): it came on while the robot waited
+            backUntilMs = narrow() ? now + BACK_MS : now;
+            waitUntilMs = now + waitMs(ctx.robotId());
         }
         if (now >= backUntilMs && now - backFromMs < BACK_MAX_MS && backUntilMs > backFromMs && narrow()) {
             backUntilMs = now + 1; // still between two walls: on out of the corridor

@@ -67,7 +67,7 @@ public final class WaitForStation extends Rule {
 
     @Override
     protected void actions(RuleContext ctx) {
-        coming = oncoming.observe(pose, scan);
+        coming = oncoming.observe(pose, scan, WatchTraffic.radiusM(ctx));
         if (StationView.taken(station, pose, scan, WatchTraffic.radiusM(ctx))) {
             freeSinceMs = -1;
         } else if (freeSinceMs < 0) {

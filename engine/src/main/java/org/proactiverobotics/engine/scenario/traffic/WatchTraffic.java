@@ -68,7 +68,7 @@ public final class WatchTraffic extends Rule {
     /** Condition: not charging, and something comes head-on or the station the robot drives to is taken. */
     @Override
     protected boolean conditions(RuleContext ctx) {
-        boolean coming = oncoming.observe(pose, scan); // every scan is remembered, whatever follows
+        boolean coming = oncoming.observe(pose, scan, radiusM(ctx)); // every scan is remembered, whatever follows
         String last = ctx.memory().values().getOrDefault(SharedMemory.LAST_DECISION, "");
         if ((battery != null && battery.charging()) || last.endsWith(" RECHARGE")) {
             return false;
