@@ -30,28 +30,56 @@ class YieldScenarioTest {
         return new double[] {1, 1, d, d, d, d, 1, 1};
     }
 
+    /** In a 0.6 m corridor: the rays at ±90° read 0.18 m, ±45° 0.25 m; the front rays d. */
+    private static double[] inCorridor(double d) {
+        return new double[] {0.18, 0.25, d, d, d, d, 0.25, 0.18};
+    }
+
     @Test
-    void somethingComingHeadOnMakesItBackOffThenWaitATimeItsIdSetsThenGoOn() {
+    void somethingComingHeadOnInACorridorMakesItBackOutThenWaitATimeItsIdSetsThenGoOn() {
         try (ScenarioKit kit = kit(DESTINATION)) {
             kit.mission().checkpoint(3, 0);
-            kit.robot().gps(0, 0).headingDeg(0).scan(ahead(1));
+            kit.robot().gps(0, 0).headingDeg(0).scan(inCorridor(1));
             kit.step(5);
             assertThat(kit.decision().winner()).isEqualTo(DESTINATION);
             assertThat(kit.suggestion(YIELD)).as("the way clear: it says nothing").isNull();
             // something 0.65 m ahead comes 3 cm nearer each step while this robot stands still
-            for (int s = 0; s < 6; s++) {
-                kit.robot().scan(ahead(0.65 - 0.03 * s));
+            for (int s = 0; s < 4; s++) {
+                kit.robot().scan(inCorridor(0.65 - 0.03 * s));
                 kit.step();
             }
             assertThat(kit.decision().winner()).isEqualTo(YIELD);
-            assertThat(kit.decision().command()).as("backs off, straight").isEqualTo("DRIVE -0.2000 -0.2000");
-            kit.robot().scan(ahead(0.4)); // it stopped there
-            kit.step(SECOND * 3 / 2);
-            assertThat(kit.decision().command()).as("backed off 1.5 s, now waits").isEqualTo("STOP");
+            assertThat(kit.decision().command()).as("backs off, straight (the walls as far on both sides)")
+                    .isEqualTo("DRIVE -0.3000 -0.3000");
+            kit.robot().scan(inCorridor(0.5)); // it stopped there; still between the walls: backs on
+            kit.step(SECOND * 3);
+            assertThat(kit.decision().command()).as("between two walls after 3 s: still backing").startsWith("DRIVE -0.3");
+            kit.robot().scan(ahead(0.5)); // out of the corridor: both sides open
+            kit.step(2);
+            assertThat(kit.decision().command()).as("out in the open, it waits").isEqualTo("STOP");
             assertThat(kit.decision().winner()).isEqualTo(YIELD);
             kit.step((int) (GiveWay.waitMs(ScenarioKit.ROBOT_ID) / 32) + 2);
             assertThat(kit.suggestion(YIELD)).as("waited its turn: hands back").isNull();
             assertThat(kit.decision().winner()).isEqualTo(DESTINATION);
+        }
+    }
+
+    @Test
+    void inTheOpenItStopsForWhatComesInsteadOfBackingOff() {
+        try (ScenarioKit kit = kit(DESTINATION)) {
+            kit.mission().checkpoint(3, 0);
+            kit.robot().gps(0, 0).headingDeg(0).scan(ahead(1));
+            kit.step(3);
+            for (int s = 0; s < 4; s++) {
+                kit.robot().scan(ahead(0.65 - 0.03 * s));
+                kit.step();
+            }
+            assertThat(kit.decision().winner()).isEqualTo(YIELD);
+            assertThat(kit.decision().command()).isEqualTo("STOP");
+            int waitSteps = (int) (GiveWay.waitMs(ScenarioKit.ROBOT_ID) / 32) - 2; // robot 1 waits 0.8 s
+            kit.step(waitSteps);
+            assertThat(kit.decisions().subList(kit.decisions().size() - waitSteps, kit.decisions().size()))
+                    .as("stopped where it is, no backing off").allMatch(d -> d.command().equals("STOP"));
         }
     }
 
