@@ -12,7 +12,6 @@ import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.NoiseLevel;
-import org.proactiverobotics.app.mission.RobotReport;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -28,11 +27,6 @@ class TrafficTest {
         MissionOptions options = new MissionOptions(world, null, null, null, "safety-first", 1)
                 .withLink(MissionOptions.Link.DIRECT).withNoise(noise);
         MissionReport report = new Mission(options).threads(1).engineTables(UnaryOperator.identity()).run(out);
-        for (RobotReport r : report.robots()) {
-            System.out.printf("%s robot %d: %s %s, %d/%d, %.1f s, %d collisions (%d with robots), battery min %.1f%n",
-                    world.name(), r.id(), r.outcome(), r.reason(), r.checkpointsReached(), r.checkpointsTotal(), r.endSimTimeS(),
-                    r.collisions(), r.robotCollisions(), r.minBattery());
-        }
         return report;
     }
 
@@ -65,6 +59,9 @@ class TrafficTest {
         return WorldSpec.fleet("shared-station", 32, 400.0, 9, new WorldSpec.Arena(4.0), robots, List.of(), 0.25,
                 List.of(new WorldSpec.RechargeStation(0.0, 0.0, 0.35)), new WorldSpec.Battery(30.0, 4.0, 100.0, 20.0));
     }
+
+    /* Under small noise (measured once): the station world as here; the corridor both accomplish, at 112 and 117 s,
+       with a robot–robot contact and three wall contacts each: not yet held. */
 
     @Test
     void twoRobotsSwapTheEndsOfANarrowCorridorWithoutTouching() throws Exception {
