@@ -87,11 +87,26 @@ public class ProactiveController extends RobotSuperclass {
      * @param config     the configuration
      */
     public ProactiveController(Simulation simulation, RobotLink link, RobotConfig config) {
-        this(simulation, link, config, null);
+        this(simulation, 0, link, config, null);
     }
 
-    private ProactiveController(Simulation simulation, RobotLink link, RobotConfig config, AutoCloseable owned) {
-        super(simulation, link, config, owned);
+    /**
+     * A controller of one robot of a world with several, over a link someone else owns. Its mission rows are
+     * seeded from that robot's own mission ({@link org.proactiverobotics.sim2d.WorldSpec#forRobot(int)}), under
+     * {@link RobotConfig#robotId()} (the robot's id in the world file).
+     *
+     * @param simulation the simulation one of whose robots this controls
+     * @param robotIndex that robot's position in the world's robots (0-based)
+     * @param link       the channel to the engine (closed with this controller)
+     * @param config     the configuration
+     */
+    public ProactiveController(Simulation simulation, int robotIndex, RobotLink link, RobotConfig config) {
+        this(simulation, robotIndex, link, config, null);
+    }
+
+    private ProactiveController(Simulation simulation, int robotIndex, RobotLink link, RobotConfig config,
+                                AutoCloseable owned) {
+        super(simulation, robotIndex, link, config, owned);
         this.robotId = config.robotId();
         this.watchdog = new Watchdog(config.watchdogTimeoutMs());
     }
@@ -111,7 +126,7 @@ public class ProactiveController extends RobotSuperclass {
     public static ProactiveController connect(Simulation simulation, String jdbcUrl, String user, String password,
                                               RobotConfig config) {
         HikariDataSource pool = RobotPool.open(jdbcUrl, user, password);
-        return new ProactiveController(simulation, new JdbcRobotLink(pool), config, pool);
+        return new ProactiveController(simulation, 0, new JdbcRobotLink(pool), config, pool);
     }
 
     /**
@@ -158,7 +173,7 @@ public class ProactiveController extends RobotSuperclass {
 
     /** The mission is also over when the engine found a checkpoint unreachable. */
     @Override
-    protected boolean missionOver() {
+    public boolean missionOver() {
         return checkpointUnreachable || super.missionOver();
     }
 
@@ -345,7 +360,7 @@ public class ProactiveController extends RobotSuperclass {
             if (!config.seedMission()) {
                 seeded = true;
             } else {
-                Boolean wrote = call("seeding the mission", 0, l -> l.seedMission(robotId, Missions.of(simulation.spec())));
+                Boolean wrote = call("seeding the mission", 0, l -> l.seedMission(robotId, Missions.of(ownMission())));
                 if (wrote != null) {
                     seeded = true;
                     LOG.info("robot {}: mission rows {}", robotId, wrote ? "seeded from world '" + simulation.spec().name() + "'"
@@ -365,6 +380,12 @@ public class ProactiveController extends RobotSuperclass {
                         String.format("%.1f", reading.levelPct()));
             }
         }
+    }
+
+    /** @return the world as this robot's mission sees it: the world itself when it has one robot */
+    private org.proactiverobotics.sim2d.WorldSpec ownMission() {
+        var spec = simulation.spec();
+        return spec.hasSeveralRobots() ? spec.forRobot(robotIndex) : spec;
     }
 
     private void unknownRequest(SensorRequest r) {

@@ -30,6 +30,8 @@ public abstract class RobotSuperclass implements AutoCloseable {
 
     /** The simulation the robot lives in (Webots' role). */
     protected final Simulation simulation;
+    /** The robot's position in the world's robots (0 for the robot of a one-robot world). */
+    protected final int robotIndex;
     /** The robot's devices and wheels. */
     protected final SimRobot robot;
     /** The channel to the engine. */
@@ -59,8 +61,25 @@ public abstract class RobotSuperclass implements AutoCloseable {
      * @param owned      a resource this controller owns and closes last (its pool), or null
      */
     protected RobotSuperclass(Simulation simulation, RobotLink link, RobotConfig config, AutoCloseable owned) {
+        this(simulation, 0, link, config, owned);
+    }
+
+    /**
+     * @param simulation the simulation one of whose robots this controls
+     * @param robotIndex that robot's position in the world's robots (0-based; see {@link Simulation#robot(int)})
+     * @param link       the channel to the engine (closed by {@link #close()})
+     * @param config     the configuration
+     * @param owned      a resource this controller owns and closes last (its pool), or null
+     */
+    protected RobotSuperclass(Simulation simulation, int robotIndex, RobotLink link, RobotConfig config,
+                              AutoCloseable owned) {
         this.simulation = Objects.requireNonNull(simulation, "simulation");
-        this.robot = simulation.robot();
+        if (robotIndex < 0 || robotIndex >= simulation.robotCount()) {
+            throw new IllegalArgumentException("robot index " + robotIndex + " is not one of the world's "
+                    + simulation.robotCount() + " robot(s)");
+        }
+        this.robotIndex = robotIndex;
+        this.robot = simulation.robot(robotIndex);
         this.link = Objects.requireNonNull(link, "link");
         this.config = Objects.requireNonNull(config, "config");
         this.owned = owned;
@@ -150,13 +169,18 @@ public abstract class RobotSuperclass implements AutoCloseable {
 
     /**
      * When {@link #run()} ends on its own. This default, as the one-process mission: every
-     * checkpoint reached (ground truth), the battery flat, or the world's time limit passed.
+     * checkpoint of this robot reached (ground truth), its battery flat, or the world's time limit passed.
      *
      * @return whether the mission is over
      */
-    protected boolean missionOver() {
-        var truth = simulation.groundTruth();
+    public boolean missionOver() {
+        var truth = simulation.groundTruth(robotIndex);
         return truth.allCheckpointsReached() || truth.batteryPct() <= 0.0 || simulation.timeLimitReached();
+    }
+
+    /** @return the robot's position in the world's robots (0-based) */
+    public int robotIndex() {
+        return robotIndex;
     }
 
     /** @return the simulated time now, ms */

@@ -86,12 +86,14 @@ public final class ScenarioKit implements AutoCloseable {
                     .robotId(ROBOT_ID)
                     .database(db.dataSource())
                     .plugins(plugins)
+                    .sharedWorld(b.sharedWorld)
                     .only(names.toArray(String[]::new))
                     .decorate(b.faults)
                     .observer(this::decided)
                     .build();
             engine.startFresh();
-            engine.writeStrategy(b.strategy != null ? b.strategy : defaultStrategy(plugins));
+            Strategy strategy = b.strategy != null ? b.strategy : defaultStrategy(plugins);
+            engine.writeStrategy(b.sharedWorld && b.strategy == null ? strategy.forSharedWorld() : strategy);
             for (int i = 0; i < START_UP_ITERATIONS; i++) {
                 engine.iterate();
             }
@@ -308,8 +310,22 @@ public final class ScenarioKit implements AutoCloseable {
         private long timeStepMs = DEFAULT_TIME_STEP_MS;
         private DataSource dataSource;
         private UnaryOperator<EngineTables> faults = UnaryOperator.identity();
+        private boolean sharedWorld;
 
         private Builder() {
+        }
+
+        /**
+         * The robot shares its world with other robots, as in a fleet world's run: the map lets
+         * cells go free again when rays see through them, {@code Yield} may be run
+         * ({@code builtIn("Yield")}), and the default strategy ranks it right below ObstacleAvoidance
+         * ({@link Strategy#forSharedWorld()}).
+         *
+         * @return this builder
+         */
+        public Builder sharedWorld() {
+            this.sharedWorld = true;
+            return this;
         }
 
         /**

@@ -6,25 +6,25 @@ package org.proactiverobotics.sim2d;
  */
 public final class Battery {
 
-    private final Simulation sim;
+    private final WorldRobot owner;
 
-    Battery(Simulation sim) {
-        this.sim = sim;
+    Battery(WorldRobot owner) {
+        this.owner = owner;
     }
 
     /** @return the charge, percent (0–100) */
     public double getLevelPct() {
-        return sim.batteryLevel();
+        return owner.batteryLevel();
     }
 
     /** @return whether the battery is charging now */
     public boolean isCharging() {
-        return sim.isCharging();
+        return owner.isCharging();
     }
 
     /** @return whether the robot's centre is within the recharge station */
     public boolean isAtStation() {
-        return sim.isAtStation();
+        return owner.isAtStation();
     }
 
     /**
@@ -34,11 +34,11 @@ public final class Battery {
      * @return whether the battery is charging
      */
     public boolean startCharging() {
-        return sim.startCharging();
+        return owner.startCharging();
     }
 
     /** Stops charging (no effect when not charging). */
     public void stopCharging() {
-        sim.stopCharging();
+        owner.stopCharging();
     }
 }

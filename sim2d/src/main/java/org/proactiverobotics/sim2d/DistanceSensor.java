@@ -2,17 +2,17 @@ package org.proactiverobotics.sim2d;
 
 /**
  * One distance sensor, Webots-style: a ray from the robot's rim, at a fixed angle to its heading, that
- * reads the distance in metres to the nearest wall or obstacle, or its range when nothing is that close.
+ * reads the distance in metres to the nearest wall, obstacle or other robot, or its range when nothing is that close.
  */
 public final class DistanceSensor {
 
-    private final Simulation sim;
+    private final WorldRobot owner;
     private final int index;
     private final double angleRad;
     private final double rangeM;
 
-    DistanceSensor(Simulation sim, int index, double angleRad, double rangeM) {
-        this.sim = sim;
+    DistanceSensor(WorldRobot owner, int index, double angleRad, double rangeM) {
+        this.owner = owner;
         this.index = index;
         this.angleRad = angleRad;
         this.rangeM = rangeM;
@@ -34,10 +34,10 @@ public final class DistanceSensor {
     }
 
     /**
-     * @return the distance in metres from the robot's rim to the nearest wall or obstacle along the ray,
+     * @return the distance in metres from the robot's rim to the nearest wall, obstacle or other robot along the ray,
      * {@link #getRangeM()} when nothing is hit within range (0 when touching); sampled after the last step
      */
     public double getValue() {
-        return sim.distanceValue(index);
+        return owner.distanceValue(index);
     }
 }

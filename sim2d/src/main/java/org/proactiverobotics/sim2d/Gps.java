@@ -6,19 +6,19 @@ package org.proactiverobotics.sim2d;
  */
 public final class Gps {
 
-    private final Simulation sim;
+    private final WorldRobot owner;
 
-    Gps(Simulation sim) {
-        this.sim = sim;
+    Gps(WorldRobot owner) {
+        this.owner = owner;
     }
 
     /** @return a new array {x, y} in metres (with noise when the simulation has some; NaN without a fix) */
     public double[] getValues() {
-        return sim.gpsValues();
+        return owner.gpsValues();
     }
 
     /** @return whether the GPS has a fix (false indoors: then {@link #getValues()} is NaN) */
     public boolean hasFix() {
-        return sim.noise().gpsFix();
+        return owner.gpsFix();
     }
 }

@@ -12,6 +12,7 @@ public final class GroundTruth {
     double headingRad;
     double distanceM;
     int collisions;
+    int robotCollisions;
     double minClearanceM = Double.POSITIVE_INFINITY;
     int checkpointsReached;
     double batteryPct;
@@ -42,13 +43,24 @@ public final class GroundTruth {
         return distanceM;
     }
 
-    /** @return how many times the robot came into contact with a wall or an obstacle it was not touching */
+    /**
+     * @return how many times the robot came into contact with a wall, an obstacle or another robot it was not
+     *         touching; includes {@link #robotCollisions()} (a collision is a collision)
+     */
     public int collisions() {
         return collisions;
     }
 
     /**
-     * @return the smallest gap seen between the robot's rim and any wall or obstacle, metres (0 when they
+     * @return how many of {@link #collisions()} were with another robot; each such contact counts once for
+     *         each of the two robots
+     */
+    public int robotCollisions() {
+        return robotCollisions;
+    }
+
+    /**
+     * @return the smallest gap seen between the robot's rim and any wall or obstacle (not other robots), metres (0 when they
      * touched), sampled at the start and after every step
      */
     public double minClearanceM() {

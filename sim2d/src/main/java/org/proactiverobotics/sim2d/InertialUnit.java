@@ -3,10 +3,10 @@ package org.proactiverobotics.sim2d;
 /** The robot's inertial unit, Webots-style: orientation in radians, sampled after the last step. */
 public final class InertialUnit {
 
-    private final Simulation sim;
+    private final WorldRobot owner;
 
-    InertialUnit(Simulation sim) {
-        this.sim = sim;
+    InertialUnit(WorldRobot owner) {
+        this.owner = owner;
     }
 
     /**
@@ -14,6 +14,6 @@ public final class InertialUnit {
      * 0 along +x, counter-clockwise positive (with noise when the simulation has some)
      */
     public double[] getRollPitchYaw() {
-        return new double[] {0.0, 0.0, sim.yawValue()};
+        return new double[] {0.0, 0.0, owner.yawValue()};
     }
 }

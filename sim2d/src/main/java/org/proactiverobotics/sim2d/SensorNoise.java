@@ -92,6 +92,19 @@ public record SensorNoise(double gpsSigmaM, double yawSigmaRad, double distanceS
         return StrictMath.sqrt(-2.0 * StrictMath.log(u1)) * StrictMath.cos(2.0 * Math.PI * u2);
     }
 
+    /**
+     * The seed of one robot's noise streams: robot 0 draws from the world's seed itself (a one-robot world reads
+     * what it read before fleets), every other robot from a seed mixed with its index, so no two robots share a
+     * stream.
+     *
+     * @param seed  the world's seed
+     * @param index the robot's position in the world's robots (0-based)
+     * @return the seed its draws use
+     */
+    static long robotSeed(long seed, int index) {
+        return index == 0 ? seed : mix(seed ^ mix(0xD1B54A32D192ED03L * index));
+    }
+
     /** SplitMix64's finaliser. */
     private static long mix(long z) {
         z = (z ^ (z >>> 30)) * 0xBF58476D1CE4E5B9L;

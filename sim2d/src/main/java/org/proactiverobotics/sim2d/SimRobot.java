@@ -20,18 +20,18 @@ public final class SimRobot {
     private double leftMps;
     private double rightMps;
 
-    SimRobot(Simulation sim, WorldSpec.Robot spec) {
+    SimRobot(WorldRobot owner, WorldSpec.Robot spec) {
         this.radiusM = spec.radiusM();
         this.maxSpeedMps = spec.maxSpeedMps();
-        this.gps = new Gps(sim);
-        this.inertialUnit = new InertialUnit(sim);
+        this.gps = new Gps(owner);
+        this.inertialUnit = new InertialUnit(owner);
         DistanceSensor[] sensors = new DistanceSensor[spec.sensorAnglesDeg().size()];
         for (int i = 0; i < sensors.length; i++) {
-            sensors[i] = new DistanceSensor(sim, i, Math.toRadians(spec.sensorAnglesDeg().get(i)), spec.sensorRangeM());
+            sensors[i] = new DistanceSensor(owner, i, Math.toRadians(spec.sensorAnglesDeg().get(i)), spec.sensorRangeM());
         }
         this.distanceSensors = List.of(sensors);
-        this.battery = new Battery(sim);
-        this.odometer = new WheelOdometer(sim);
+        this.battery = new Battery(owner);
+        this.odometer = new WheelOdometer(owner);
     }
 
     /** @return the default distance sensors' angles relative to the heading, degrees, by index (a copy) */

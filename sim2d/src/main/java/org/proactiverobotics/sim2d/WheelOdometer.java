@@ -10,14 +10,14 @@ package org.proactiverobotics.sim2d;
  */
 public final class WheelOdometer {
 
-    private final Simulation sim;
+    private final WorldRobot owner;
 
-    WheelOdometer(Simulation sim) {
-        this.sim = sim;
+    WheelOdometer(WorldRobot owner) {
+        this.owner = owner;
     }
 
     /** @return a new array {left, right}: each wheel's travel since the start, metres (backwards negative) */
     public double[] getTravelM() {
-        return sim.wheelTravelM();
+        return owner.wheelTravelM();
     }
 }

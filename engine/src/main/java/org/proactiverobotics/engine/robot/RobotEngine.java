@@ -25,6 +25,7 @@ import org.proactiverobotics.engine.StateStoreException;
 import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.persistence.CommitGroup;
 import org.proactiverobotics.engine.persistence.IterationTransaction;
 import org.proactiverobotics.engine.persistence.JdbcStateStore;
@@ -38,6 +39,7 @@ import org.proactiverobotics.engine.scenario.destination.ReachDestinationScenari
 import org.proactiverobotics.engine.scenario.failsafe.FailSafeScenario;
 import org.proactiverobotics.engine.scenario.localisation.LocalisationScenario;
 import org.proactiverobotics.engine.scenario.mapping.MappingScenario;
+import org.proactiverobotics.engine.scenario.traffic.YieldScenario;
 import org.proactiverobotics.engine.tables.EngineComments;
 import org.proactiverobotics.engine.tables.EngineTables;
 import org.proactiverobotics.engine.tables.JdbcRobotTables;
@@ -57,7 +59,8 @@ import org.slf4j.LoggerFactory;
  * transaction per iteration over a database, and the pruning that keeps the engine's history
  * bounded.
  *
- * <p>Start order: {@value #ORDER_TEXT}. Slots: the built-in scenarios that suggest keep the
+ * <p>Start order: {@value #ORDER_TEXT}; in a world shared with other robots ({@link Builder#sharedWorld}):
+ * {@value #SHARED_WORLD_ORDER_TEXT}, Yield in slot 3 and the plug-ins after it. Slots: the built-in scenarios that suggest keep the
  * CommandArray slots they always had (ReachDestination 0, BatteryMonitor 1, ObstacleAvoidance 2),
  * so states saved by earlier versions resume; each plug-in gets the next free slot, in the order
  * given; a saved state's slots are kept on a resume.
@@ -95,6 +98,15 @@ public final class RobotEngine {
             BatteryMonitorScenario.NAME, 1,
             ReachDestinationScenario.NAME, 0,
             ObstacleAvoidanceScenario.NAME, 2);
+    /**
+     * Only in a world shared with other robots ({@link Builder#sharedWorld}): the traffic scenario, with
+     * its slot, started right after ReachDestination (so it sees this iteration's route-driven
+     * robot) and before the plug-ins and the collision monitor (which vets its backing off).
+     */
+    private static final Map<String, Integer> SHARED_WORLD = orderedMap(YieldScenario.NAME, 3);
+    /** The start order in a world shared with other robots, for the javadoc and the help texts: {@link #startOrderPhrase(boolean)}. */
+    public static final String SHARED_WORLD_ORDER_TEXT = "DataAcquisition → Localisation → Mapping → BatteryMonitor → ReachDestination"
+            + " → Yield → plug-ins → ObstacleAvoidance → FailSafe → DecisionMaking";
     /** Started after every scenario that suggests: the fail-safe withdraws a failing one's word before the decision reads it. */
     private static final List<String> LAST = List.of(FailSafeScenario.NAME, DecisionMakingScenario.NAME);
 
@@ -161,6 +173,7 @@ public final class RobotEngine {
     /** @return the names of the built-in scenarios, which a plug-in may not take */
     public static Set<String> builtInScenarios() {
         Set<String> names = new LinkedHashSet<>(FIRST.keySet());
+        names.addAll(SHARED_WORLD.keySet());
         names.addAll(LAST);
         return names;
     }
@@ -173,12 +186,26 @@ public final class RobotEngine {
      * @return each suggesting scenario's slot on a fresh start, by slot
      */
     public static Map<String, Integer> freshSlots(ScenarioPlugins plugins) {
+        return freshSlots(plugins, false);
+    }
+
+    /**
+     * {@link #freshSlots(ScenarioPlugins)}, in a world shared with other robots or not.
+     *
+     * @param plugins     the plug-ins that will be loaded
+     * @param sharedWorld whether the engine runs the traffic scenario ({@link Builder#sharedWorld})
+     * @return each suggesting scenario's slot on a fresh start, by slot
+     */
+    public static Map<String, Integer> freshSlots(ScenarioPlugins plugins, boolean sharedWorld) {
         Map<String, Integer> slots = new LinkedHashMap<>();
         FIRST.forEach((name, slot) -> {
             if (slot >= 0) {
                 slots.put(name, slot);
             }
         });
+        if (sharedWorld) {
+            slots.putAll(SHARED_WORLD);
+        }
         int next = 0;
         for (String name : plugins.scenarios().keySet()) {
             while (slots.containsValue(next)) {
@@ -201,8 +228,23 @@ public final class RobotEngine {
      * @return every scenario's name, in start order
      */
     public static List<String> startOrder(List<String> plugins) {
+        return startOrder(plugins, false);
+    }
+
+    /**
+     * {@link #startOrder(List)}, in a world shared with other robots or not: there the traffic
+     * scenario starts right after ReachDestination.
+     *
+     * @param plugins     the plug-ins' scenario names, in the order given
+     * @param sharedWorld whether the engine runs the traffic scenario ({@link Builder#sharedWorld})
+     * @return every scenario's name, in start order
+     */
+    public static List<String> startOrder(List<String> plugins, boolean sharedWorld) {
         List<String> order = new ArrayList<>(FIRST.keySet());
         order.remove(ObstacleAvoidanceScenario.NAME);
+        if (sharedWorld) {
+            order.addAll(SHARED_WORLD.keySet());
+        }
         order.addAll(plugins);
         order.add(ObstacleAvoidanceScenario.NAME);
         order.addAll(LAST);
@@ -214,7 +256,15 @@ public final class RobotEngine {
      *         joined by " → ", the plug-ins standing as {@value #PLUGINS}
      */
     public static String startOrderPhrase() {
-        return String.join(" → ", startOrder(List.of(PLUGINS)));
+        return startOrderPhrase(false);
+    }
+
+    /**
+     * @param sharedWorld in a world shared with other robots or not
+     * @return the start order as the documentation states it ({@link #ORDER_TEXT}, {@link #SHARED_WORLD_ORDER_TEXT})
+     */
+    public static String startOrderPhrase(boolean sharedWorld) {
+        return String.join(" → ", startOrder(List.of(PLUGINS), sharedWorld));
     }
 
     /** Starts from StartUp, discarding any saved state of this robot's engine. */
@@ -467,6 +517,7 @@ public final class RobotEngine {
         private Set<String> only;
         private final List<IterationListener> listeners = new ArrayList<>();
         private CommitGuard guard;
+        private boolean sharedWorld;
 
         private Builder() {
         }
@@ -474,6 +525,18 @@ public final class RobotEngine {
         /** @param robotId the robot, the {@code robot_id} of the engine's tables and state */
         public Builder robotId(int robotId) {
             this.robotId = robotId;
+            return this;
+        }
+
+        /**
+         * @param sharedWorld whether the robot shares its world with other robots (a fleet world):
+         *                    then the engine runs the traffic scenario (Yield, in its own slot) and
+         *                    gives the rules the {@link SharedWorld} service, so the map lets cells
+         *                    that a robot occupied go free again; false (the default) is the lone
+         *                    robot, exactly as before
+         */
+        public Builder sharedWorld(boolean sharedWorld) {
+            this.sharedWorld = sharedWorld;
             return this;
         }
 
@@ -602,7 +665,7 @@ public final class RobotEngine {
             known.addAll(plugins.scenarios().values());
             ScenarioRegistry registry = ScenarioRegistry.of(known);
 
-            List<String> order = new ArrayList<>(startOrder(List.copyOf(plugins.scenarios().keySet())));
+            List<String> order = new ArrayList<>(startOrder(List.copyOf(plugins.scenarios().keySet()), sharedWorld));
             if (only != null) {
                 only.forEach(registry::get); // an unknown name fails here, naming the known ones
                 order.retainAll(only);
@@ -627,7 +690,10 @@ public final class RobotEngine {
                     .service(KnownMap.class, knownMap)
                     .service(PoseEstimateTable.class, wired.poses())
                     .service(DriveProfile.class, drive);
-            freshSlots(plugins).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
+            if (sharedWorld) {
+                b.service(SharedWorld.class, SharedWorld.DEFAULT);
+            }
+            freshSlots(plugins, sharedWorld).forEach(b::slot); // in slot order; a saved state's slots still win on a resume
             if (observer != null) {
                 b.service(DecisionObserver.class, observer);
             }

@@ -70,6 +70,32 @@ public record Strategy(String name, Map<String, Integer> priorities, Map<String,
         });
     }
 
+    /**
+     * This strategy for a world shared with other robots: the traffic scenario (Yield) ranked
+     * right below ObstacleAvoidance, every other rank kept in its order (the priorities doubled to
+     * make room), so the collision monitor still vets its backing off and it outranks what ranked
+     * below the monitor. A strategy that lists Yield, or does not list ObstacleAvoidance, is
+     * returned as it is. {@code safety-first} becomes ObstacleAvoidance 6, Yield 5, BatteryMonitor
+     * 4, ReachDestination 2.
+     *
+     * @return the strategy for a shared world, of the same name
+     */
+    public Strategy forSharedWorld() {
+        String yield = "Yield";
+        String monitor = "ObstacleAvoidance";
+        if (priorities.containsKey(yield) || !priorities.containsKey(monitor)) {
+            return this;
+        }
+        Map<String, Integer> ranked = new LinkedHashMap<>();
+        priorities.forEach((scenario, p) -> {
+            ranked.put(scenario, 2 * p);
+            if (scenario.equals(monitor)) {
+                ranked.put(yield, 2 * p - 1);
+            }
+        });
+        return new Strategy(name, ranked, timeoutsMs);
+    }
+
     /** @return the bundled strategies' names, the default first */
     public static List<String> names() {
         return NAMES;

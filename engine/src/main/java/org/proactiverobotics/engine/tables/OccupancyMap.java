@@ -247,6 +247,17 @@ public final class OccupancyMap {
     }
 
     /**
+     * A ray passed well through a cell, in a world where obstacles move: it loses {@value #MISS} of
+     * its evidence even when it was a wall for good (a robot that stood there and left). Only for
+     * rays that went on well beyond the cell: a ray ending in a wall's cell is no proof it is empty.
+     *
+     * @return whether the cell's byte changed
+     */
+    public boolean clear(int i, int j) {
+        return setRaw(i, j, (byte) (FREE + Math.max(0, evidence(i, j) - MISS)));
+    }
+
+    /**
      * Sets a cell's state ({@link #OCCUPIED}: the evidence of one hit short of a wall seen once,
      * i.e. the least evidence); its chunk is marked changed when the byte changes.
      *

@@ -11,6 +11,7 @@ import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
+import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMap;
@@ -24,7 +25,8 @@ import org.proactiverobotics.engine.tables.PoseEstimateTable;
  * walls ({@link RouteFollower}): straight at the checkpoint while the map shows the way clear, else
  * at the farthest waypoint in sight. When the planner has found no route at all for
  * {@value #NO_ROUTE_MS} ms of simulated time (the robot stopped, scanning: a wall a noisy reading
- * drew across a doorway is cleared by the rays that pass through it), it marks the checkpoint
+ * drew across a doorway is cleared by the rays that pass through it; in a world shared with other
+ * robots, {@link SharedWorld#noRouteMs()}), it marks the checkpoint
  * unreachable and generates GetCheckpoint (which then stops the robot). When the robot makes no
  * progress along the route for {@value RouteFollower#STALL_MS} ms (a gap too tight for the collision
  * monitor), the follower closes that place on its map, backs off and plans round it
@@ -120,7 +122,9 @@ public final class MoveToCheckpoint extends Rule {
             if (noRouteSinceMs < 0) {
                 noRouteSinceMs = position.simTimeMs();
             }
-            if (position.simTimeMs() - noRouteSinceMs >= NO_ROUTE_MS) {
+            // in a shared world a robot standing in the only door is no wall: it is waited for longer
+            long patienceMs = ctx.findService(SharedWorld.class).map(SharedWorld::noRouteMs).orElse(NO_ROUTE_MS);
+            if (position.simTimeMs() - noRouteSinceMs >= patienceMs) {
                 unreachable = true;
                 ctx.service(MissionTables.class).markUnreachable(seq, position.simTimeMs());
                 if (belief != null) {

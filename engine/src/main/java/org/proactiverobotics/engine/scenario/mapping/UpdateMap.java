@@ -6,6 +6,7 @@ import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
 import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.MapChunk;
 import org.proactiverobotics.engine.tables.OccupancyMap;
@@ -44,11 +45,19 @@ public final class UpdateMap extends Rule {
      * corner away under small noise until the robot's side grazed it (corridors, seed 17, number 14).
      */
     static final double UNCLEARED_M = 0.04;
+    /**
+     * In a shared world, a ray that hit something clears even a wall-for-good cell it crossed at
+     * least this far before its end (a ray that hit nothing, every cell it crossed), metres: an obstacle that moved away is seen through, while a ray that ends in a wall's
+     * cell, or crosses the free corner of one on its way into the wall, is no proof it is empty.
+     */
+    static final double CLEAR_BEFORE_END_M = 0.15;
     /** Readings this close in simulated time are taken as one moment, ms. */
     static final long SAME_MOMENT_MS = 40;
 
     /** The simulated time of the last scan added, ms (-1: none yet). */
     private long lastScanMs = -1;
+    /** In a shared world, the cells something moved into (null for a lone robot: nothing saved). */
+    private MovingCells moving;
 
     /** The map as stored, loaded on the first run after a start or a resume. */
     private transient OccupancyMap map;
@@ -90,7 +99,15 @@ public final class UpdateMap extends Rule {
             map = OccupancyMap.of(table.readMap());
         }
         double radiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
-        addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan);
+        if (ctx.findService(SharedWorld.class).isPresent()) {
+            if (moving == null) {
+                moving = new MovingCells();
+            }
+            addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan, moving);
+            moving.decay(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan);
+        } else {
+            addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan);
+        }
         lastScanMs = scan.simTimeMs();
         List<MapChunk> changed = map.takeChanged();
         if (!changed.isEmpty()) {
@@ -115,6 +132,24 @@ public final class UpdateMap extends Rule {
      * @param scan    the scan
      */
     public static void addScan(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, DistanceScan scan) {
+        addScan(map, xM, yM, yawRad, radiusM, scan, null);
+    }
+
+    /**
+     * Marks one scan's rays on a map, in a world the robot may share with others.
+     *
+     * @param map     the map
+     * @param xM      the robot's x at the scan, metres
+     * @param yM      its y, metres
+     * @param yawRad  its heading, radians
+     * @param radiusM its body's radius (the rays start at the rim), metres
+     * @param scan    the scan
+     * @param moving  in a world shared with other robots, the cells something moved into (rays clear what they
+     *                see through, walls for good included, and a hit on a cell seen free is followed here);
+     *                null for a lone robot
+     */
+    static void addScan(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, DistanceScan scan,
+                        MovingCells moving) {
         for (int k = 0; k < scan.anglesRad().length; k++) {
             double d = scan.distancesM()[k];
             if (!(d >= 0) || !Double.isFinite(d)) {
@@ -125,12 +160,13 @@ public final class UpdateMap extends Rule {
             double reach = radiusM + Math.min(d, scan.rangeM());
             double ex = xM + Math.cos(a) * reach;
             double ey = yM + Math.sin(a) * reach;
-            traverse(map, xM, yM, ex, ey, hit, hit && d < scan.rangeM() * CLOSE_HIT);
+            traverse(map, xM, yM, ex, ey, hit, hit && d < scan.rangeM() * CLOSE_HIT, moving);
         }
     }
 
     /** Walks the cells from (x0, y0) to (x1, y1) (Amanatides-Woo): free on the way, the last occupied on a hit. */
-    private static void traverse(OccupancyMap map, double x0, double y0, double x1, double y1, boolean hit, boolean close) {
+    private static void traverse(OccupancyMap map, double x0, double y0, double x1, double y1, boolean hit, boolean close,
+                                 MovingCells moving) {
         int i = OccupancyMap.cell(x0);
         int j = OccupancyMap.cell(y0);
         int ei = OccupancyMap.cell(x1);
@@ -147,9 +183,15 @@ public final class UpdateMap extends Rule {
         int guard = Math.abs(ei - i) + Math.abs(ej - j) + 2;
         // a hit's last few centimetres may lie inside the wall (a reading a little long): not cleared
         double keepFrom = hit ? 1.0 - UNCLEARED_M / Math.hypot(dx, dy) : Double.POSITIVE_INFINITY;
+        // in a shared world, the cells left well behind before the ray's end are seen through: cleared, walls for good too
+        // (a ray that hit nothing saw through every cell it crossed, its last one too)
+        double clearBefore = moving == null ? Double.NEGATIVE_INFINITY : hit ? 1.0 - CLEAR_BEFORE_END_M / Math.hypot(dx, dy) : 2.0;
         double entered = 0.0;
+        double left = Math.min(nextX, nextY);
         while ((i != ei || j != ej) && guard-- > 0) {
-            if (entered < keepFrom) {
+            if (left < clearBefore) {
+                map.clear(i, j);
+            } else if (entered < keepFrom) {
                 map.miss(i, j); // seen free; a wall drawn here by a noisy reading loses its evidence
             }
             if (nextX < nextY) {
@@ -161,11 +203,17 @@ public final class UpdateMap extends Rule {
                 nextY += tdy;
                 j += sj;
             }
+            left = Math.min(nextX, nextY);
+        }
+        if (moving != null && hit && map.get(ei, ej) == OccupancyMap.FREE) {
+            moving.addWithNeighbours(map, ei, ej); // seen free, now hit: something moved in
         }
         if (close) {
             map.confirm(ei, ej);
         } else if (hit) {
             map.hit(ei, ej);
+        } else if (moving != null) {
+            map.clear(ei, ej);
         } else {
             map.miss(ei, ej);
         }

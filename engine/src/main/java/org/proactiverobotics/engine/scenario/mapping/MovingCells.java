@@ -1,0 +1,106 @@
+package org.proactiverobotics.engine.scenario.mapping;
+
+import java.util.Arrays;
+import org.proactiverobotics.engine.tables.DistanceScan;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+
+/**
+ * In a world shared with other robots, the cells that became occupied after the rays had seen them
+ * free: something moved in (another robot, most likely; a wall is hit before any ray crosses it).
+ * While such a cell is in the rays' view, the rays decide (they clear it when they see through
+ * it); out of view, it loses one unit of evidence every {@value #DECAY_EVERY} scans, so that a
+ * robot seen in a corridor the robot has since left is not a wall there for good (a route round
+ * it through space never seen, and then no route at all, was what followed). At most
+ * {@value #CAPACITY} cells are followed (the oldest are dropped). Kept in plain fields: saved
+ * with the rule that holds it.
+ */
+final class MovingCells {
+
+    /** Out of view, a cell loses one unit of evidence every this many scans (evidence 6: gone in 1.5 s at 32 ms). */
+    static final int DECAY_EVERY = 8;
+    /** Occupied cells this many cells round a moved-in one are taken as the same body (0.1 m). */
+    static final int NEIGHBOURS = 2;
+    /** The most cells followed. */
+    static final int CAPACITY = 1024;
+    /** A cell within this angle beyond the outermost rays still counts as in view, radians. */
+    static final double VIEW_MARGIN_RAD = Math.toRadians(10);
+
+    private long[] cells = new long[64];
+    private int count;
+    private int scans;
+
+    /**
+     * Follows a cell that a ray hit after the rays had seen it free, and the occupied cells within
+     * {@value #NEIGHBOURS} cells of it: the same body's side, first hit at the edge of the range
+     * where nothing had been seen yet (left behind, it stood in a corridor for good).
+     */
+    void addWithNeighbours(OccupancyMap map, int i, int j) {
+        add(i, j);
+        for (int b = -NEIGHBOURS; b <= NEIGHBOURS; b++) {
+            for (int a = -NEIGHBOURS; a <= NEIGHBOURS; a++) {
+                if ((a != 0 || b != 0) && map.get(i + a, j + b) == OccupancyMap.OCCUPIED) {
+                    add(i + a, j + b);
+                }
+            }
+        }
+    }
+
+    /** Follows a cell that a ray hit after the rays had seen it free. */
+    void add(int i, int j) {
+        long key = ((long) i << 32) | (j & 0xffffffffL);
+        for (int k = 0; k < count; k++) {
+            if (cells[k] == key) {
+                return;
+            }
+        }
+        if (count == CAPACITY) {
+            System.arraycopy(cells, 1, cells, 0, count - 1); // the oldest goes
+            count--;
+        } else if (count == cells.length) {
+            cells = Arrays.copyOf(cells, Math.min(CAPACITY, 2 * cells.length));
+        }
+        cells[count++] = key;
+    }
+
+    /**
+     * After a scan: every {@value #DECAY_EVERY} scans, the followed cells out of the rays' view
+     * lose one unit of evidence; cells with none left are no longer followed.
+     *
+     * @param map     the map
+     * @param xM      the robot's x at the scan, metres
+     * @param yM      its y, metres
+     * @param yawRad  its heading, radians
+     * @param radiusM its radius, metres
+     * @param scan    the scan
+     */
+    void decay(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, DistanceScan scan) {
+        if (++scans % DECAY_EVERY != 0 || count == 0) {
+            return;
+        }
+        double lo = Double.POSITIVE_INFINITY;
+        double hi = Double.NEGATIVE_INFINITY;
+        for (double a : scan.anglesRad()) {
+            lo = Math.min(lo, a);
+            hi = Math.max(hi, a);
+        }
+        // in view: where a ray that hits something beyond could still clear the cell
+        double reach = radiusM + scan.rangeM() - UpdateMap.CLEAR_BEFORE_END_M;
+        int kept = 0;
+        for (int k = 0; k < count; k++) {
+            int i = (int) (cells[k] >> 32);
+            int j = (int) cells[k];
+            double dx = OccupancyMap.centre(i) - xM;
+            double dy = OccupancyMap.centre(j) - yM;
+            double bearing = Math.atan2(dy, dx) - yawRad;
+            bearing = Math.atan2(Math.sin(bearing), Math.cos(bearing));
+            boolean inView = Math.hypot(dx, dy) <= reach && bearing >= lo - VIEW_MARGIN_RAD && bearing <= hi + VIEW_MARGIN_RAD;
+            if (!inView && map.evidence(i, j) > 0) {
+                map.clear(i, j);
+            }
+            if (map.evidence(i, j) > 0) {
+                cells[kept++] = cells[k];
+            }
+        }
+        count = kept;
+    }
+}
