@@ -42,6 +42,38 @@ class TightGapTest {
               "rechargeStation": {"x": -2.5, "y": -2.5, "radiusM": 0.35} }
             """;
 
+    /**
+     * The same wall with a 0.31 m gap (0.155 m from its middle to each side) on the straight way to
+     * the recharge station, and the door: the battery (12 %, 0.5 %/m) sends the robot to charge
+     * before its checkpoint. Before the station's way had a progress watch the robot turned on the
+     * spot in the gap's mouth until the time limit (4 304 turns in 150 s, never charged).
+     */
+    static final String GAP_TO_STATION = """
+            { "name": "tight-gap-station", "maxSimTimeS": 150, "seed": 3, "arena": {"radiusM": 5.0},
+              "robot": {"x": -2.0, "y": -1.0, "headingDeg": 0},
+              "obstacles": [
+                {"shape": "box", "x": 0.0, "y": -3.0625, "widthM": 0.1, "heightM": 3.875, "angleDeg": 0},
+                {"shape": "box", "x": 0.0, "y": 0.9175, "widthM": 0.1, "heightM": 3.465, "angleDeg": 0},
+                {"shape": "box", "x": 0.0, "y": 4.175, "widthM": 0.1, "heightM": 1.65, "angleDeg": 0}
+              ],
+              "checkpoints": [{"x": -2.5, "y": 3.5}],
+              "rechargeStation": {"x": 2.0, "y": -1.0, "radiusM": 0.35},
+              "battery": {"initial": 12.0, "drainPerMeter": 0.5, "rechargeTo": 100.0, "rechargeRatePerS": 20.0} }
+            """;
+
+    @Test
+    void onTheWayToTheStationATightGapIsClosedAndTheRobotGoesRoundByTheDoorToCharge() throws Exception {
+        Missions.Run run = Missions.direct(WorldFiles.parse(GAP_TO_STATION, "tight-gap-station"), "safety-first");
+        assertThat(run.report().outcome()).as("see %s", run.outDir()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
+        assertThat(run.report().recharges()).as("it got to the station").isEqualTo(1);
+        assertThat(run.report().collisions()).isZero();
+        assertThat(run.report().simTimeS()).as("seconds of turning, not minutes").isLessThan(90);
+        List<JsonObject> trace = run.trace();
+        assertThat(turnsOnTheSpot(trace)).isLessThan(500);
+        assertThat(trace).as("the station's way was closed at the gap and planned round").anySatisfy(line -> assertThat(reason(line))
+                .startsWith("BatteryMonitor closed the way at (").contains("no progress along the route"));
+    }
+
     @Test
     void aGapTooTightForTheMonitorIsClosedAndTheRobotGoesRoundByTheDoor() throws Exception {
         Missions.Run run = Missions.direct(WorldFiles.parse(GAP_AND_DOOR, "tight-gap"), "safety-first");

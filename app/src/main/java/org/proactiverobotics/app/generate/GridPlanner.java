@@ -168,25 +168,56 @@ public final class GridPlanner {
         return c >= 0 && cells[c];
     }
 
+    /**
+     * A search's arrays, kept by each thread from search to search: a cell's cost counts only where
+     * its mark is this search's, so that a search on a floor of millions of cells does not first
+     * allocate and fill arrays of its whole area (the profile of {@code import-map} put that first).
+     */
+    private static final class Scratch {
+        private static final ThreadLocal<Scratch> OF_THREAD = ThreadLocal.withInitial(Scratch::new);
+        double[] g = new double[0];
+        int[] reached = new int[0];
+        int[] closed = new int[0];
+        int stamp;
+        final CellHeap open = new CellHeap();
+
+        /** @return this thread's arrays for n cells, with a fresh stamp and an empty open list */
+        static Scratch forCells(int n) {
+            Scratch s = OF_THREAD.get();
+            if (s.g.length < n || s.stamp == Integer.MAX_VALUE) {
+                s.g = new double[Math.max(n, s.g.length)];
+                s.reached = new int[s.g.length];
+                s.closed = new int[s.g.length];
+                s.stamp = 0;
+            }
+            s.stamp++;
+            s.open.size = 0;
+            return s;
+        }
+    }
+
     /** A* from cell to cell: the length in metres, or infinity. */
     private double search(int start, int goal) {
-        double[] g = new double[size * rows];
-        Arrays.fill(g, Double.POSITIVE_INFINITY);
+        Scratch scratch = Scratch.forCells(size * rows);
+        double[] g = scratch.g;
+        int[] reached = scratch.reached;
+        int[] closed = scratch.closed;
+        int stamp = scratch.stamp;
         g[start] = 0;
+        reached[start] = stamp;
         int gx = goal % size;
         int gy = goal / size;
-        CellHeap open = new CellHeap();
+        CellHeap open = scratch.open;
         open.add(heuristic(start, gx, gy), start);
-        boolean[] closed = new boolean[size * rows];
         while (!open.isEmpty()) {
             int c = open.poll();
             if (c == goal) {
                 return g[c] * CELL_M;
             }
-            if (closed[c]) {
+            if (closed[c] == stamp) {
                 continue;
             }
-            closed[c] = true;
+            closed[c] = stamp;
             int cx = c % size;
             int cy = c / size;
             for (int dy = -1; dy <= 1; dy++) {
@@ -198,12 +229,13 @@ public final class GridPlanner {
                     }
                     int n = ny * size + nx;
                     // a diagonal step must not cut a blocked corner
-                    if (!free[n] || closed[n] || (dx != 0 && dy != 0 && (!free[cy * size + nx] || !free[ny * size + cx]))) {
+                    if (!free[n] || closed[n] == stamp || (dx != 0 && dy != 0 && (!free[cy * size + nx] || !free[ny * size + cx]))) {
                         continue;
                     }
                     double step = g[c] + (dx != 0 && dy != 0 ? Math.sqrt(2) : 1);
-                    if (step < g[n]) {
+                    if (reached[n] != stamp || step < g[n]) { // a cell not reached this search is at infinity
                         g[n] = step;
+                        reached[n] = stamp;
                         open.add(step + heuristic(n, gx, gy), n);
                     }
                 }

@@ -1,5 +1,7 @@
 package org.proactiverobotics.bench.mission;
 
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -16,7 +18,9 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * arena's, measured in one JVM, round after round (the reference arena, then each floor, over the
  * direct link: no database), so that the machine's load of the moment weighs on both alike. The
  * figures are the missions' own report timings; the first round warms the JIT compiler and is
- * printed but left out of the medians.
+ * printed but left out of the medians. Beside them, the processor time of the thread that ran the
+ * mission (the direct link runs it all on one thread: engine, physics and trace), per step, which a
+ * machine loaded by other jobs inflates far less than the wall-clock timings.
  *
  * <p>{@code FloorTiming [--rounds N] [--floors 56x60,100x100] [--seed S]}
  */
@@ -51,26 +55,34 @@ public final class FloorTiming {
         }
         double[][] engine = new double[worlds.size()][rounds];
         double[][] physics = new double[worlds.size()][rounds];
+        double[][] cpu = new double[worlds.size()][rounds];
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         for (int r = 0; r < rounds; r++) {
             for (int k = 0; k < worlds.size(); k++) {
                 WorldSpec w = worlds.get(k);
                 Path out = Files.createTempDirectory("floor-timing-");
                 MissionOptions options = new MissionOptions(w, null, null, null, "safety-first", 1).withLink(MissionOptions.Link.DIRECT);
+                long cpu0 = threads.getCurrentThreadCpuTime();
                 MissionReport report = new Mission(options).run(out);
+                // the direct link runs the whole mission on this thread: its processor time, what the machine's load does not inflate
+                cpu[k][r] = (threads.getCurrentThreadCpuTime() - cpu0) / 1e6 / report.controlSteps();
                 engine[k][r] = report.timing().engineMs();
                 physics[k][r] = report.timing().physicsMs();
-                System.out.printf(Locale.ROOT, "round %d %-22s %-22s steps %6d  engine %.3f ms/step  physics %.4f ms/step  %.1fx real time%n",
-                        r + 1, w.name(), report.outcome(), report.controlSteps(), engine[k][r], physics[k][r], report.realTimeFactor());
+                System.out.printf(Locale.ROOT, "round %d %-22s %-22s steps %6d  engine %.3f ms/step  physics %.4f ms/step  cpu %.3f ms/step  %.1fx real time%n",
+                        r + 1, w.name(), report.outcome(), report.controlSteps(), engine[k][r], physics[k][r], cpu[k][r],
+                        report.realTimeFactor());
             }
         }
         System.out.println("medians of rounds 2 on (against the reference arena's of the same rounds):");
         double refEngine = median(engine[0], rounds);
         double refPhysics = median(physics[0], rounds);
+        double refCpu = median(cpu[0], rounds);
         for (int k = 0; k < worlds.size(); k++) {
             double e = median(engine[k], rounds);
             double p = median(physics[k], rounds);
-            System.out.printf(Locale.ROOT, "%-22s engine %.3f ms/step (%.2fx)  physics %.4f ms/step (%.2fx)%n",
-                    worlds.get(k).name(), e, e / refEngine, p, p / refPhysics);
+            double c = median(cpu[k], rounds);
+            System.out.printf(Locale.ROOT, "%-22s engine %.3f ms/step (%.2fx)  physics %.4f ms/step (%.2fx)  cpu %.3f ms/step (%.2fx)%n",
+                    worlds.get(k).name(), e, e / refEngine, p, p / refPhysics, c, c / refCpu);
         }
     }
 

@@ -3,6 +3,7 @@ package org.proactiverobotics.engine.navigation;
 import java.util.Locale;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
 /**
@@ -220,6 +221,20 @@ public final class RouteFollower {
      */
     public static String backOffCommand(DriveProfile profile) {
         return Steering.drive(-BACK_SPEED * profile.maxSpeedMps(), 0.0, profile);
+    }
+
+    /**
+     * Whether the robot drove for a scenario's route in the last iteration, for the progress watch's
+     * {@code driving}: that scenario's command won, or the obstacle avoidance's did (it amends the
+     * command it finds, so its turns are time spent for the route).
+     *
+     * @param lastDecision the last decision, "scenario command" (null: none yet)
+     * @param scenario     the scenario that follows the route
+     * @return whether that time counts for the watch
+     */
+    public static boolean droveFor(String lastDecision, String scenario) {
+        return lastDecision != null
+                && (lastDecision.startsWith(scenario + " ") || lastDecision.startsWith(ObstacleAvoidanceScenario.NAME + " "));
     }
 
     /** @return whether the follower gave up: {@value #STALLS_INSIDE_LIMIT} stalls inside places it had closed */

@@ -60,8 +60,24 @@ public final class RoutePlanner {
         /** Cells reached (cost and parent valid) and cells done, where equal to {@link #stamp}. */
         int[] seen = new int[0];
         int[] shut = new int[0];
+        /** Cells whose {@link #info} is this plan's, where equal to {@link #stamp}. */
+        int[] known = new int[0];
+        /** A cell's state worked out once per plan: -1 blocked, else its extra cost ({@link Grid#extra}). */
+        int[] info = new int[0];
         int stamp;
         long[] heap = new long[1024];
+
+        /**
+         * @return a cell's state (column a, row b of the area, index k): -1 when blocked, else its extra
+         *         cost; worked out once per plan (the search asks for a cell up to a dozen times)
+         */
+        int info(Grid g, int k, int a, int b) {
+            if (known[k] != stamp) {
+                known[k] = stamp;
+                info[k] = g.blocked(a, b) ? -1 : g.extra(a, b);
+            }
+            return info[k];
+        }
 
         /** @return this thread's arrays, large enough for an area of n cells, with a fresh stamp */
         static Search forArea(int n) {
@@ -72,6 +88,8 @@ public final class RoutePlanner {
                 s.from = new int[size];
                 s.seen = new int[size];
                 s.shut = new int[size];
+                s.known = new int[size];
+                s.info = new int[size];
                 s.stamp = 0;
             }
             s.stamp++;
@@ -377,17 +395,21 @@ public final class RoutePlanner {
                     continue;
                 }
                 int nk = nb * w + na;
-                if (shut[nk] == stamp || g.blocked(na, nb)) {
+                if (shut[nk] == stamp) {
+                    continue;
+                }
+                int extra = search.info(g, nk, na, nb);
+                if (extra < 0) {
                     continue;
                 }
                 if (inClosed != null && inClosed[nk] && !closed.allows(OccupancyMap.centre(g.i0 + a), OccupancyMap.centre(g.j0 + b),
                         OccupancyMap.centre(g.i0 + na), OccupancyMap.centre(g.j0 + nb))) {
                     continue; // a closed place is left the way the robot came, never entered
                 }
-                if (d >= 4 && (g.blocked(na, b) || g.blocked(a, nb))) {
+                if (d >= 4 && (search.info(g, b * w + na, na, b) < 0 || search.info(g, nb * w + a, a, nb) < 0)) {
                     continue;
                 }
-                int nc = cost[k] + (d < 4 ? 10 : 14) + g.extra(na, nb);
+                int nc = cost[k] + (d < 4 ? 10 : 14) + extra;
                 if (seen[nk] != stamp || nc < cost[nk]) {
                     seen[nk] = stamp;
                     cost[nk] = nc;

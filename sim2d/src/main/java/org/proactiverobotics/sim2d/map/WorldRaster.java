@@ -25,9 +25,22 @@ public final class WorldRaster {
         boolean[] blocked = new boolean[columns * rows];
         for (int j = 0; j < rows; j++) {
             for (int i = 0; i < columns; i++) {
-                double x = originX + (i + 0.5) * cellM;
-                double y = originY + (j + 0.5) * cellM;
-                blocked[j * columns + i] = blocked(world, x, y);
+                blocked[j * columns + i] = world.arena().inside(originX + (i + 0.5) * cellM, originY + (j + 0.5) * cellM) < 0;
+            }
+        }
+        // each obstacle over the cells of its bounding square only: a floor has thousands of them
+        for (WorldSpec.Obstacle o : world.obstacles()) {
+            double reach = o.isCircle() ? o.radiusM() : Math.hypot(o.widthM(), o.heightM()) / 2;
+            int i0 = Math.max(0, (int) Math.floor((o.x() - reach - originX) / cellM) - 1);
+            int i1 = Math.min(columns - 1, (int) Math.ceil((o.x() + reach - originX) / cellM) + 1);
+            int j0 = Math.max(0, (int) Math.floor((o.y() - reach - originY) / cellM) - 1);
+            int j1 = Math.min(rows - 1, (int) Math.ceil((o.y() + reach - originY) / cellM) + 1);
+            for (int j = j0; j <= j1; j++) {
+                for (int i = i0; i <= i1; i++) {
+                    if (!blocked[j * columns + i] && o.distanceTo(originX + (i + 0.5) * cellM, originY + (j + 0.5) * cellM) == 0.0) {
+                        blocked[j * columns + i] = true;
+                    }
+                }
             }
         }
         return new OccupancyGrid(columns, rows, cellM, originX, originY, blocked);

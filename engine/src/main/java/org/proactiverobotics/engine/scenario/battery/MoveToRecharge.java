@@ -3,6 +3,7 @@ package org.proactiverobotics.engine.scenario.battery;
 import org.proactiverobotics.engine.Outcome;
 import org.proactiverobotics.engine.Rule;
 import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.SharedMemory;
 import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.Clearance;
 import org.proactiverobotics.engine.motion.CollisionReflex;
@@ -26,7 +27,11 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * ({@link RouteFollower}, re-planned as walls appear), over the cells the rays have seen where they
  * lead to the station (the way BatteryMonitor counted), with the shared collision reflex
  * ({@link CollisionReflex}, its distances derived from the robot's speed and body) beneath, so that
- * a recharge is safe under any strategy, even one that ranks it above obstacle avoidance. It measures how much
+ * a recharge is safe under any strategy, even one that ranks it above obstacle avoidance. The route
+ * follower watches the progress as MoveToCheckpoint's does: a gap the planner lets the body through
+ * and the reflex does not (no progress for {@value RouteFollower#STALL_MS} ms) is closed on the map,
+ * the robot backs off and plans round it; when only such closed places lead to the station it
+ * stops rather than turn on the spot. It measures how much
  * longer than the planned way the way driven to the station was ({@link DrainEstimate#trip}).
  */
 public final class MoveToRecharge extends Rule {
@@ -134,14 +139,18 @@ public final class MoveToRecharge extends Rule {
         OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
         aimX = xM;
         aimY = yM;
-        if (route.step(map, position.xM(), position.yM(), xM, yM, radiusM * AT_STATION_FRACTION * 0.9,
-                profile.axleWidthM() / 2) == RouteFollower.Status.TARGET) {
-            aimX = route.targetX(); // no route on the map known so far: straight at the station, the reflex beneath
+        RouteFollower.Status status = route.step(map, position.xM(), position.yM(), position.yawRad(), xM, yM,
+                radiusM * AT_STATION_FRACTION * 0.9, profile.axleWidthM() / 2, position.simTimeMs(), drivingForThis(ctx));
+        if (status == RouteFollower.Status.TARGET) {
+            aimX = route.targetX();
             aimY = route.targetY();
-        }
+        } // no route on the map known so far: straight at the station, the reflex beneath
         BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
         if (belief != null) {
             belief.pose(ctx.iteration(), position.xM(), position.yM(), position.yawRad());
+            if (route.closedNow()) {
+                belief.wayClosed(ctx.iteration(), scenario(), route.closed().newestReason());
+            }
             if (route.planned()) {
                 belief.route(ctx.iteration(), scenario(), route.waypointsX(), route.waypointsY());
             }
@@ -149,8 +158,15 @@ public final class MoveToRecharge extends Rule {
         if (tripPlannedM < 0) {
             tripPlannedM = route.remainingM(position.xM(), position.yM(), xM, yM);
         }
-        behindSide = Steering.turnSide(position.xM(), position.yM(), position.yawRad(), aimX, aimY, behindSide);
-        String command = Steering.goTo(position.xM(), position.yM(), position.yawRad(), aimX, aimY, profile, behindSide);
+        String command;
+        if (status == RouteFollower.Status.BACK_OFF) {
+            command = RouteFollower.backOffCommand(profile); // a stall in a narrow place: back off, then plan round it
+        } else if (status == RouteFollower.Status.NO_ROUTE && !route.closed().isEmpty()) {
+            command = Steering.STOP; // only the narrow places it could not pass lead there: wait, never turn on the spot for ever
+        } else {
+            behindSide = Steering.turnSide(position.xM(), position.yM(), position.yawRad(), aimX, aimY, behindSide);
+            command = Steering.goTo(position.xM(), position.yM(), position.yawRad(), aimX, aimY, profile, behindSide);
+        }
         if (scan != null) {
             if (Math.abs(position.simTimeMs() - scan.simTimeMs()) > STALE_SCAN_MS) {
                 command = Steering.STOP; // the distance readings lag: never drive blind
@@ -161,6 +177,11 @@ public final class MoveToRecharge extends Rule {
             }
         }
         ctx.suggest(command);
+    }
+
+    /** Whether the robot drove for this trip last iteration: its command won, or the obstacle avoidance amended it. */
+    private boolean drivingForThis(RuleContext ctx) {
+        return RouteFollower.droveFor(ctx.memory().values().get(SharedMemory.LAST_DECISION), scenario());
     }
 
     @Override

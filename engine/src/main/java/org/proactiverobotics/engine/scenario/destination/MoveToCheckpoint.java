@@ -8,7 +8,6 @@ import org.proactiverobotics.engine.SharedMemory;
 import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
-import org.proactiverobotics.engine.scenario.avoidance.ObstacleAvoidanceScenario;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.navigation.SharedWorld;
@@ -153,8 +152,7 @@ public final class MoveToCheckpoint extends Rule {
 
     /** Whether the robot drove for this rule's route last iteration: its command won, or the collision monitor vetoed it. */
     private boolean drivingForThis(RuleContext ctx) {
-        String last = ctx.memory().values().get(SharedMemory.LAST_DECISION);
-        return last != null && (last.startsWith(scenario() + " ") || last.startsWith(ObstacleAvoidanceScenario.NAME + " "));
+        return RouteFollower.droveFor(ctx.memory().values().get(SharedMemory.LAST_DECISION), scenario());
     }
 
     @Override
