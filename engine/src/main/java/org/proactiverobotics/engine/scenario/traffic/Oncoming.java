@@ -7,8 +7,11 @@ import org.proactiverobotics.engine.tables.PoseEstimate;
  * Tells something that moved into the robot's way from a wall: the scans of the last
  * {@value #SAMPLES} iterations are remembered with the robot's pose, and something a front ray
  * (±25°) hits within {@value #ALERT_M} m of the rim now comes when an earlier ray passed through
- * that very point (within {@value #LATERAL_M} m of it) and went on {@value #SEEN_BEYOND_M} m or
- * more: the place was seen free then. A wall's point was never seen through, however the robot
+ * the place {@value #DEPTH_M} m behind that point, inside what the ray hit now (within {@value #LATERAL_M} m
+ * of it), and went on {@value #SEEN_BEYOND_M} m or more: the place was seen free then. Behind, not at,
+ * the hit point: a ray grazing past the edge of something that stands still (a parked robot, a wall's
+ * corner) passes close to its rim, never through it; judged at the rim, a robot driving or turning
+ * toward a parked one gave way to it again and again (generated worlds of four robots, none accomplished). A wall's point was never seen through, however the robot
  * drove or turned toward it; comparing distances instead took an oblique wall the robot turned
  * along for a robot coming. Kept in plain fields: saved with the rule that holds it.
  */
@@ -26,6 +29,8 @@ final class Oncoming {
     static final double LATERAL_M = 0.02;
     /** It saw the point free when it went on this far beyond it, metres (readings stray a centimetre or two). */
     static final double SEEN_BEYOND_M = 0.08;
+    /** How far behind the hit point, along the ray, an earlier ray must have seen free space, metres. */
+    static final double DEPTH_M = 0.04;
 
     private final long[] timeMs = new long[SAMPLES];
     private final double[] xs = new double[SAMPLES];
@@ -62,7 +67,8 @@ final class Oncoming {
                 continue;
             }
             double a = pose.yawRad() + scan.anglesRad()[k];
-            coming = seenFreeBefore(pose.xM() + Math.cos(a) * (radiusM + d), pose.yM() + Math.sin(a) * (radiusM + d), radiusM);
+            double behind = radiusM + d + DEPTH_M;
+            coming = seenFreeBefore(pose.xM() + Math.cos(a) * behind, pose.yM() + Math.sin(a) * behind, radiusM);
         }
         timeMs[next] = scan.simTimeMs();
         xs[next] = pose.xM();
