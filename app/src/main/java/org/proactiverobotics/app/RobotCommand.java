@@ -206,9 +206,10 @@ public final class RobotCommand implements Callable<Integer> {
         }
         stdout.flush();
         MissionReport report;
+        FleetProcess fleet = new FleetProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor,
+                process.logEvery(), process.heartbeat(), noise.level().sensorNoise()), signal);
         try {
-            report = new FleetProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor,
-                    process.logEvery(), process.heartbeat(), noise.level().sensorNoise()), signal).run();
+            report = fleet.run();
         } catch (DatabaseWait.Unreachable e) {
             output.removeIfEmpty();
             err.println(e.getMessage());
@@ -222,6 +223,7 @@ public final class RobotCommand implements Callable<Integer> {
         }
         try {
             writeWorldReport(report, outDir.resolve("report.json"));
+            fleet.writeReplay(outDir.resolve("replay.html"), report);
         } catch (IOException e) {
             err.println("cannot write the report in " + outDir + ": " + e.getMessage());
             err.flush();

@@ -1,6 +1,8 @@
 package org.proactiverobotics.app.deploy;
 
 import com.zaxxer.hikari.HikariDataSource;
+import java.io.IOException;
+import java.nio.file.Path;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
@@ -10,7 +12,14 @@ import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import org.proactiverobotics.app.Plural;
+import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.ScenarioColours;
+import org.proactiverobotics.app.replay.ReplayData;
+import org.proactiverobotics.app.replay.ReplayPage;
+import org.proactiverobotics.app.replay.RobotTracer;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
 import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.app.mission.RobotReport;
 import org.proactiverobotics.db.Backoff;
@@ -46,6 +55,8 @@ public final class FleetProcess {
 
     private final RobotProcess.Options options;
     private final ShutdownSignal signal;
+    /** What the first robot knew, step by step: replay.html (the page shows one robot for now). */
+    private final ReplayData replay;
 
     /**
      * @param options what to run ({@code robotId} is not used: the ids are the world's)
@@ -57,6 +68,23 @@ public final class FleetProcess {
         }
         this.options = options;
         this.signal = signal;
+        this.replay = new ReplayData(Map.of(), options.world().robots().get(0).robot().sensorAnglesDeg().size());
+    }
+
+    /**
+     * Writes replay.html: what the world's first robot knew, step by step (after {@link #run()}), as
+     * {@code run} writes it for such a world.
+     *
+     * @param file   where
+     * @param report the run's report
+     * @throws IOException when it cannot be written
+     */
+    public void writeReplay(Path file, MissionReport report) throws IOException {
+        WorldSpec world = options.world();
+        String summary = "robot " + world.robots().get(0).id() + " of " + world.robots().size() + ": "
+                + Mission.summary(report) + ", robot process";
+        ReplayPage.write(file, ReplayPage.Source.ROBOT, world.forRobot(0),
+                ScenarioColours.of(RobotEngine.freshSlots(ScenarioPlugins.none())), replay, summary);
     }
 
     /** One robot of the world: its controller and what its part of the report gathers. */
@@ -85,6 +113,7 @@ public final class FleetProcess {
     public MissionReport run() throws DatabaseWait.Unreachable {
         WorldSpec world = options.world();
         Simulation sim = new Simulation(world, options.noise());
+        RobotTracer tracer = new RobotTracer(sim, replay); // the simulation's first robot
         List<Lane> lanes = new ArrayList<>();
         int[] ids = new int[world.robots().size()];
         for (int i = 0; i < ids.length; i++) {
@@ -103,7 +132,12 @@ public final class FleetProcess {
                     }
                     lane.controller = new ProactiveController(sim, lane.index, new JdbcRobotLink(pool),
                             RobotConfig.defaults(lane.robotId));
-                    lane.controller.onCommand(c -> lane.commandWins.merge(c.scenario(), 1L, Long::sum));
+                    lane.controller.onCommand(c -> {
+                        lane.commandWins.merge(c.scenario(), 1L, Long::sum);
+                        if (lane.index == 0) {
+                            tracer.command(c);
+                        }
+                    });
                 }
                 WorldLockstep lockstep = new WorldLockstep(new JdbcWorldClock(pool, ids), ids, options.timing(),
                         signal::stopRequested, i -> lanes.get(i).outcome != null);
@@ -112,7 +146,7 @@ public final class FleetProcess {
                     return report(sim, lanes, lockstep, 0, null);
                 }
                 long start = System.nanoTime();
-                MissionReport.Timing timing = loop(sim, lanes, lockstep, sync ? 0 : options.realTimeFactor());
+                MissionReport.Timing timing = loop(sim, lanes, lockstep, tracer, sync ? 0 : options.realTimeFactor());
                 double wallS = (System.nanoTime() - start) / 1e9;
                 boolean stopped = lanes.stream().anyMatch(l -> l.outcome == null);
                 lockstep.finish(stopped ? RunState.STOPPED : RunState.FINISHED);
@@ -128,7 +162,9 @@ public final class FleetProcess {
     }
 
     /** The loop of {@code run}'s fleet mission, the engines' iterations replaced by the handshake. */
-    private MissionReport.Timing loop(Simulation sim, List<Lane> lanes, WorldLockstep lockstep, double realTimeFactor) {
+    private MissionReport.Timing loop(Simulation sim, List<Lane> lanes, WorldLockstep lockstep, RobotTracer tracer,
+                                      double realTimeFactor) {
+        Lane first = lanes.get(0);
         List<Lane> active = new ArrayList<>(lanes);
         long robotNs = 0;
         long waitNs = 0;
@@ -142,6 +178,10 @@ public final class FleetProcess {
                 lane.controller.sense();
             }
             long t1 = System.nanoTime();
+            boolean firstActive = first.outcome == null;
+            if (firstActive) {
+                tracer.sensed();
+            }
             if (!lockstep.sensed(step + 1, sim.simTimeMs())) {
                 break;
             }
@@ -153,6 +193,9 @@ public final class FleetProcess {
             long t3 = System.nanoTime();
             sim.step();
             long t4 = System.nanoTime();
+            if (firstActive) {
+                tracer.stepped(lockstep.lastTick(0).map(t -> t.iteration()).orElse(step));
+            }
             for (Lane lane : active) {
                 lane.controlSteps++;
                 lane.outcome = Outcome.of(sim, lane.index, lane.controller.checkpointUnreachable());
