@@ -21,6 +21,7 @@ import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.RobotReport;
 import org.proactiverobotics.app.mission.NoiseLevel;
 import org.proactiverobotics.app.mission.Progress;
 import org.proactiverobotics.db.Databases;
@@ -96,6 +97,11 @@ public final class RunCommand implements Callable<Integer> {
     @Option(names = "--mcap", description = "Also write run.mcap: the run as an MCAP file for Foxglove (docs/foxglove.md).")
     private boolean mcap;
 
+    @Option(names = "--threads", paramLabel = "N", defaultValue = "1",
+            description = "With a world of several robots: how many threads iterate the robots' engines (the run is the"
+                    + " same, bit for bit, whatever N). Default: ${DEFAULT-VALUE}.")
+    private int threads;
+
     @Option(names = "--quiet", description = "No live progress line.")
     private boolean quiet;
 
@@ -129,6 +135,17 @@ public final class RunCommand implements Callable<Integer> {
             return Main.EXIT_BAD_INPUT;
         }
         NoiseLevel noiseLevel = noise.level();
+        if (threads < 1) {
+            err.println("--threads must be >= 1: " + threads);
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        if (mcap && spec.hasSeveralRobots()) {
+            err.println("--mcap does not take a world with several robots yet (" + spec.name() + " has "
+                    + spec.robots().size() + "): drop --mcap");
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
         if (waitS < 0) {
             err.println("--wait-s must be >= 0: " + waitS);
             err.flush();
@@ -191,7 +208,7 @@ public final class RunCommand implements Callable<Integer> {
         stdout.flush();
         MissionReport report;
         try {
-            Mission mission = new Mission(options).mcap(mcap);
+            Mission mission = new Mission(options).mcap(mcap).threads(threads);
             if (live) {
                 var progress = new ProgressPrinter(System.out, spec);
                 mission.onStep(progress::update);
@@ -215,6 +232,13 @@ public final class RunCommand implements Callable<Integer> {
             err.println("mission aborted: " + (hasSqlCause(e) ? DatabaseProblem.of(e, url, null).message() : e.getMessage()));
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
+        }
+        if (report.hasRobots()) {
+            for (RobotReport r : report.robots()) {
+                stdout.printf(Locale.ROOT, "  robot %d: %s, checkpoints %d/%d, %.1f m, %s (%d with robots), battery min %.1f %%%n",
+                        r.id(), r.outcome(), r.checkpointsReached(), r.checkpointsTotal(), r.distanceM(),
+                        Plural.of(r.collisions(), "collision"), r.robotCollisions(), r.minBattery());
+            }
         }
         stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.0fx real time)%n"
                         + "  %.1f m travelled, %s, battery min %.1f %%, %s%n",
@@ -257,13 +281,20 @@ public final class RunCommand implements Callable<Integer> {
 
         ProgressPrinter(PrintStream out, WorldSpec world) {
             this.line = new Progress(out);
-            this.total = world.checkpoints().size();
+            this.total = world.robots().stream().mapToInt(r -> r.checkpoints().size()).sum();
         }
 
+        /** Every robot's checkpoints together, the lowest battery. */
         void update(Simulation sim) {
-            GroundTruth truth = sim.groundTruth();
+            int reached = 0;
+            double battery = Double.POSITIVE_INFINITY;
+            for (int i = 0; i < sim.robotCount(); i++) {
+                GroundTruth truth = sim.groundTruth(i);
+                reached += truth.checkpointsReached();
+                battery = Math.min(battery, truth.batteryPct());
+            }
             double wallS = (System.nanoTime() - startNs) / 1e9;
-            line.update(sim.simTimeS(), truth.checkpointsReached(), total, truth.batteryPct(), sim.simTimeS() / Math.max(wallS, 1e-9));
+            line.update(sim.simTimeS(), reached, total, battery, sim.simTimeS() / Math.max(wallS, 1e-9));
         }
 
         void finish() {

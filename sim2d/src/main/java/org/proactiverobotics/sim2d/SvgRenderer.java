@@ -74,6 +74,8 @@ public final class SvgRenderer {
     private final WorldSpec spec;
     private final Map<String, String> colours = new LinkedHashMap<>();
     private final List<TrajectoryPoint> trajectory = new ArrayList<>();
+    /** Where each {@link #trajectory(List)} call's points begin: a path of its own, not joined to the one before. */
+    private final java.util.Set<Integer> pathStarts = new java.util.HashSet<>();
     private final List<Marker> markers = new ArrayList<>();
     /** Each robot's path in a world of several, by its index in {@link WorldSpec#robots()}. */
     private final Map<Integer, List<TrajectoryPoint>> robotPaths = new java.util.TreeMap<>();
@@ -113,8 +115,12 @@ public final class SvgRenderer {
         return this;
     }
 
-    /** Adds a path, drawn in order, coloured by each point's category. */
+    /**
+     * Adds a path, drawn in order, coloured by each point's category; each call's path is drawn apart from the
+     * others (one per robot of a world with several).
+     */
     public SvgRenderer trajectory(List<TrajectoryPoint> points) {
+        pathStarts.add(trajectory.size());
         trajectory.addAll(points);
         return this;
     }
@@ -388,10 +394,11 @@ public final class SvgRenderer {
         int start = 0;
         for (int i = 1; i <= trajectory.size(); i++) {
             // One polyline per run of a category; each run starts at the previous run's last point.
-            if (i == trajectory.size() || !Objects.equals(trajectory.get(i).category(), trajectory.get(start).category())) {
+            if (i == trajectory.size() || pathStarts.contains(i)
+                    || !Objects.equals(trajectory.get(i).category(), trajectory.get(start).category())) {
                 String category = trajectory.get(start).category();
                 sb.append(f("  <polyline stroke=\"%s\" points=\"", esc(colourOf(category))));
-                for (int k = Math.max(0, start - 1); k < i; k++) {
+                for (int k = pathStarts.contains(start) ? start : start - 1; k < i; k++) {
                     TrajectoryPoint p = trajectory.get(k);
                     sb.append(n(p.x())).append(',').append(n(-p.y())).append(' ');
                 }

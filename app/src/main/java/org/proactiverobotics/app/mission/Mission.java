@@ -43,7 +43,8 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * with a pool of its own, exactly as two processes would; or, with
  * {@link MissionOptions.Link#DIRECT}, through an in-process link with the same semantics and no
  * database (what the middleware costs is the difference). Deterministic: the same world and
- * seed give the same run, whichever the layer.
+ * seed give the same run, whichever the layer. A world with several robots runs as a
+ * {@link FleetMission}: one world, an engine and a controller per robot.
  */
 public final class Mission {
 
@@ -60,6 +61,7 @@ public final class Mission {
     private String drivingScenario = "none";
     private Map<String, Integer> slots = Map.of();
     private boolean mcap;
+    private int threads = 1;
 
     /** @param options what to run */
     public Mission(MissionOptions options) {
@@ -102,6 +104,21 @@ public final class Mission {
     }
 
     /**
+     * How many threads iterate the engines of a world with several robots (the run is the same whatever the count;
+     * a one-robot world ignores it).
+     *
+     * @param count at least 1
+     * @return this mission
+     */
+    public Mission threads(int count) {
+        if (count < 1) {
+            throw new IllegalArgumentException("threads must be at least 1: " + count);
+        }
+        this.threads = count;
+        return this;
+    }
+
+    /**
      * Runs the mission to its end and writes report.json's content (returned), trace.jsonl,
      * replay.html, trajectory.svg and, with {@link #mcap}, run.mcap into the output directory.
      *
@@ -111,6 +128,9 @@ public final class Mission {
      * @throws IOException  when the output cannot be written
      */
     public MissionReport run(Path outDir) throws SQLException, IOException {
+        if (options.world().hasSeveralRobots()) {
+            return new FleetMission(options, threads, engineTables, stepHook).run(outDir);
+        }
         if (options.link() == MissionOptions.Link.DIRECT) {
             return runDirect(outDir);
         }

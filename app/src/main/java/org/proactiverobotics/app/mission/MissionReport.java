@@ -1,6 +1,7 @@
 package org.proactiverobotics.app.mission;
 
 import java.util.Collections;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import org.proactiverobotics.sim2d.GroundTruth;
@@ -24,7 +25,10 @@ import org.proactiverobotics.sim2d.Simulation;
  * @param controlSteps       robot control steps
  * @param engineIterations   engine iterations
  * @param distanceM          ground truth, metres travelled
- * @param collisions         ground truth, contacts with walls or obstacles
+ * @param collisions         ground truth, contacts with walls, obstacles or (in a world with several robots) other
+ *                           robots; summed over the robots
+ * @param robotCollisions    ground truth, the contacts between two robots among {@code collisions}, counted for each
+ *                           of the two, summed over the robots; null, and left out of report.json, in a one-robot world
  * @param minClearanceM      ground truth, the closest the robot's rim came to anything, metres
  * @param minBattery         ground truth, lowest battery, percent
  * @param finalBattery       ground truth, battery at the end, percent
@@ -36,6 +40,8 @@ import org.proactiverobotics.sim2d.Simulation;
  *                           report.json, when the engine never had a pose, and in the robot process's report: that
  *                           process cannot see what the engine believed
  * @param timing             mean wall time per control step, milliseconds, by phase
+ * @param robots             each robot's own report, in the world's order; null, and left out of report.json, in a
+ *                           one-robot world (the whole-run fields are then that robot's)
  */
 public record MissionReport(
         String world,
@@ -52,6 +58,7 @@ public record MissionReport(
         long engineIterations,
         double distanceM,
         int collisions,
+        Integer robotCollisions,
         double minClearanceM,
         double minBattery,
         double finalBattery,
@@ -59,7 +66,19 @@ public record MissionReport(
         Map<String, Long> commandWins,
         Long ruleFailures,
         PoseError poseError,
-        Timing timing) {
+        Timing timing,
+        List<RobotReport> robots) {
+
+    /** A one-robot report: no robotCollisions, no robots (as report.json was before fleets). */
+    public MissionReport(String world, boolean success, Outcome outcome, String strategy, String database,
+                         int checkpointsReached, int checkpointsTotal, double simTimeS, double wallTimeS,
+                         double realTimeFactor, long controlSteps, long engineIterations, double distanceM,
+                         int collisions, double minClearanceM, double minBattery, double finalBattery, int recharges,
+                         Map<String, Long> commandWins, Long ruleFailures, PoseError poseError, Timing timing) {
+        this(world, success, outcome, strategy, database, checkpointsReached, checkpointsTotal, simTimeS, wallTimeS,
+                realTimeFactor, controlSteps, engineIterations, distanceM, collisions, null, minClearanceM, minBattery,
+                finalBattery, recharges, commandWins, ruleFailures, poseError, timing, null);
+    }
 
     /**
      * A report whose ground-truth fields are read from the simulation (rounded as in report.json).
@@ -85,9 +104,14 @@ public record MissionReport(
         return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, strategy, database,
                 truth.checkpointsReached(), truth.checkpointsTotal(), simS, round(wallTimeS, 3),
                 round(simS / Math.max(wallTimeS, 1e-9), 1), controlSteps, engineIterations, round(truth.distanceM(), 3),
-                truth.collisions(), round(truth.minClearanceM(), 4), round(truth.minBatteryPct(), 2),
+                truth.collisions(), null, round(truth.minClearanceM(), 4), round(truth.minBatteryPct(), 2),
                 round(truth.batteryPct(), 2), truth.recharges(), Collections.unmodifiableMap(new TreeMap<>(commandWins)), ruleFailures, poseError,
-                timing);
+                timing, null);
+    }
+
+    /** @return whether this is the report of a world with several robots (it has {@link #robots()}) */
+    public boolean hasRobots() {
+        return robots != null;
     }
 
     /** @return the database kind a JDBC URL names: "h2", "mariadb", "mysql", ... */

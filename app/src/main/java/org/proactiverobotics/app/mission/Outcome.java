@@ -24,7 +24,18 @@ public enum Outcome {
      * @return the outcome, or null while the mission goes on
      */
     public static Outcome of(Simulation sim) {
-        GroundTruth truth = sim.groundTruth();
+        return of(sim, 0);
+    }
+
+    /**
+     * How one robot's mission stands after a step, in a world with several robots.
+     *
+     * @param sim   the simulation
+     * @param index the robot's position in the world's robots
+     * @return the outcome, or null while its mission goes on
+     */
+    public static Outcome of(Simulation sim, int index) {
+        GroundTruth truth = sim.groundTruth(index);
         if (truth.checkpointsReached() == truth.checkpointsTotal()) {
             return MISSION_ACCOMPLISHED;
         }
@@ -46,7 +57,19 @@ public enum Outcome {
      * @return the outcome, or null while the mission goes on
      */
     public static Outcome of(Simulation sim, boolean unreachable) {
-        Outcome outcome = of(sim);
+        return of(sim, 0, unreachable);
+    }
+
+    /**
+     * {@link #of(Simulation, int)}, then whether that robot's engine marked a checkpoint unreachable.
+     *
+     * @param sim         the simulation
+     * @param index       the robot's position in the world's robots
+     * @param unreachable whether its robot side has read an unreachable mark
+     * @return the outcome, or null while its mission goes on
+     */
+    public static Outcome of(Simulation sim, int index, boolean unreachable) {
+        Outcome outcome = of(sim, index);
         return outcome == null && unreachable ? CHECKPOINT_UNREACHABLE : outcome;
     }
 }

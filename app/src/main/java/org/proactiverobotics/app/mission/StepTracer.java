@@ -30,6 +30,10 @@ import org.proactiverobotics.sim2d.Simulation;
 final class StepTracer {
 
     private final Simulation sim;
+    /** The robot's position in the world's robots. */
+    private final int index;
+    /** The robot's id written on each line, or null in a one-robot world (no {@code robot} key). */
+    private final Integer robotId;
     private final TraceWriter trace;
     private final ReplayData replay;
     private final BeliefTracer belief;
@@ -61,16 +65,32 @@ final class StepTracer {
     private double right;
 
     StepTracer(Simulation sim, TraceWriter trace, ReplayData replay, BeliefTracer belief, McapRecorder mcap) {
+        this(sim, 0, null, trace, replay, belief, mcap);
+    }
+
+    /**
+     * @param sim     the simulation
+     * @param index   the robot's position in the world's robots
+     * @param robotId its id on each trace line, or null for none (a one-robot world)
+     * @param trace   trace.jsonl
+     * @param replay  the replay's columns of this robot
+     * @param belief  this robot's engine's belief
+     * @param mcap    run.mcap's recorder, or null
+     */
+    StepTracer(Simulation sim, int index, Integer robotId, TraceWriter trace, ReplayData replay, BeliefTracer belief,
+               McapRecorder mcap) {
         this.sim = sim;
+        this.index = index;
+        this.robotId = robotId;
         this.trace = trace;
         this.replay = replay;
         this.belief = belief;
         this.mcap = mcap;
-        GroundTruth t = sim.groundTruth();
+        GroundTruth t = sim.groundTruth(index);
         this.checkpoints = t.checkpointsReached();
         this.recharges = t.recharges();
         this.collisions = t.collisions();
-        this.charging = sim.robot().battery().isCharging();
+        this.charging = sim.robot(index).battery().isCharging();
     }
 
     void seen(SeenReadings readings) {
@@ -98,15 +118,15 @@ final class StepTracer {
 
     /** After the robot acted, before the world steps: the pose the iteration saw, the wheels it set. */
     void beforePhysics() {
-        GroundTruth t = sim.groundTruth();
+        GroundTruth t = sim.groundTruth(index);
         simTimeMs = sim.simTimeMs();
         x = t.x();
         y = t.y();
         heading = t.headingRad();
         battery = t.batteryPct();
-        chargingAtStep = sim.robot().battery().isCharging();
-        left = sim.robot().leftSpeedMps();
-        right = sim.robot().rightSpeedMps();
+        chargingAtStep = sim.robot(index).battery().isCharging();
+        left = sim.robot(index).leftSpeedMps();
+        right = sim.robot(index).rightSpeedMps();
     }
 
     /**
@@ -125,7 +145,7 @@ final class StepTracer {
                 pending.add(TraceEvent.failSafe(e.getKey().substring(WatchFailures.RECORD_PREFIX.length()), e.getValue()));
             }
         }
-        GroundTruth t = sim.groundTruth();
+        GroundTruth t = sim.groundTruth(index);
         while (checkpoints < t.checkpointsReached()) {
             pending.add(TraceEvent.checkpoint(checkpoints++));
         }
@@ -133,7 +153,7 @@ final class StepTracer {
             recharges = t.recharges();
             pending.add(TraceEvent.of(TraceEvent.RECHARGE_STARTED));
         }
-        boolean nowCharging = sim.robot().battery().isCharging();
+        boolean nowCharging = sim.robot(index).battery().isCharging();
         if (charging && !nowCharging) {
             pending.add(TraceEvent.of(TraceEvent.RECHARGE_FINISHED));
         }
@@ -156,7 +176,7 @@ final class StepTracer {
                 battery, chargingAtStep, left, right, List.copyOf(pending), believed);
         pending.clear();
         decidedIteration = -1;
-        trace.write(step);
+        trace.write(step, robotId);
         replay.add(step);
         if (mcap != null) {
             mcap.record(step);

@@ -27,11 +27,19 @@ final class TraceWriter implements AutoCloseable {
     }
 
     void write(TraceStep step) {
+        write(step, null);
+    }
+
+    /**
+     * @param step    the step
+     * @param robotId its robot's id in a world with several robots, or null (a one-robot world: no {@code robot} key)
+     */
+    void write(TraceStep step, Integer robotId) {
         if (failure != null) {
             return;
         }
         try {
-            step.write(json); // straight into the file's buffer: no String per line
+            step.write(json, robotId); // straight into the file's buffer: no String per line
             out.write('\n');
         } catch (IOException e) {
             failure = e;

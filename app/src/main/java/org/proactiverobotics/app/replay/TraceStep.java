@@ -64,8 +64,23 @@ public record TraceStep(long iteration, long simTimeMs, Map<String, String> sugg
      * @throws IOException when the writer fails
      */
     public void write(JsonWriter w) throws IOException {
+        write(w, null);
+    }
+
+    /**
+     * Writes the line's object, with the robot's id in a world with several robots.
+     *
+     * @param w       where (lenient: a NaN never reaches it, each becomes null first)
+     * @param robotId the robot's id, written as {@code robot} after {@code schemaVersion}; null (a one-robot
+     *                world) writes no {@code robot} key
+     * @throws IOException when the writer fails
+     */
+    public void write(JsonWriter w, Integer robotId) throws IOException {
         w.beginObject();
         w.name("schemaVersion").value(SCHEMA_VERSION);
+        if (robotId != null) {
+            w.name("robot").value(robotId.intValue());
+        }
         w.name("iteration").value(iteration);
         w.name("simTimeS").jsonValue(Decimals.of(simTimeMs, 3));
         w.name("suggestions").beginObject();
