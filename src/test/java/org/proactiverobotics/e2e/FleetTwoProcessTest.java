@@ -112,6 +112,20 @@ class FleetTwoProcessTest {
         }
     }
 
+    @Test
+    void aWorldOfSeveralRobotsWithMcapIsBadInputAndNothingIsWritten() throws Exception {
+        Path world = Files.writeString(tmp.resolve("three-hops.json"), THREE_HOPS);
+        java.io.StringWriter err = new java.io.StringWriter();
+        picocli.CommandLine cl = org.proactiverobotics.app.Main.commandLine();
+        cl.setErr(new java.io.PrintWriter(err, true));
+        cl.setOut(new java.io.PrintWriter(new java.io.StringWriter(), true));
+        int code = cl.execute("robot", "--world", world.toString(), "--db", "jdbc:mariadb://127.0.0.1:1/none",
+                "--out", tmp.resolve("out").toString(), "--mcap");
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString()).contains("--mcap does not take a world with several robots yet (three-hops has 3)");
+        assertThat(tmp.resolve("out")).doesNotExist();
+    }
+
     /**
      * @param ids      the robots served
      * @param threads  --threads (0: automatic)
