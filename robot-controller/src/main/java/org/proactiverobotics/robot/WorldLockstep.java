@@ -222,6 +222,9 @@ public final class WorldLockstep implements StepGate {
                 }
             }
             if (waiting < 0) {
+                if (timing == Timing.SYNC) {
+                    clock.handOff(positions, count); // their commands and requests, read with the ticks
+                }
                 if (step > 0) {
                     pacing.waited(System.nanoTime() - start);
                 }

@@ -126,11 +126,13 @@ public final class FleetProcess {
         boolean sync = options.timing() == Timing.SYNC;
         try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password())) {
             try {
+                JdbcRobotLink[] links = new JdbcRobotLink[lanes.size()];
                 for (Lane lane : lanes) {
                     if (!prepare(pool, lane, world)) {
                         return report(sim, lanes, null, 0, null);
                     }
-                    lane.controller = new ProactiveController(sim, lane.index, new JdbcRobotLink(pool),
+                    links[lane.index] = new JdbcRobotLink(pool);
+                    lane.controller = new ProactiveController(sim, lane.index, links[lane.index],
                             RobotConfig.defaults(lane.robotId));
                     lane.controller.onCommand(c -> {
                         lane.commandWins.merge(c.scenario(), 1L, Long::sum);
@@ -139,7 +141,8 @@ public final class FleetProcess {
                         }
                     });
                 }
-                WorldLockstep lockstep = new WorldLockstep(new JdbcWorldClock(pool, ids), ids, options.timing(),
+                // in sync timing each robot's newest command and requests come with the engines' ticks: no reads of their own
+                WorldLockstep lockstep = new WorldLockstep(new JdbcWorldClock(pool, ids, sync ? links : null), ids, options.timing(),
                         signal::stopRequested, i -> lanes.get(i).outcome != null);
                 LOG.info("world {}: {} robots ({}), {} timing", world.name(), ids.length, idList(ids), options.timing().label());
                 if (!lockstep.begin()) {

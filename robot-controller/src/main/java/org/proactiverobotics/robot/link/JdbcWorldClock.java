@@ -4,7 +4,11 @@ import java.sql.Connection;
 import java.sql.PreparedStatement;
 import java.sql.ResultSet;
 import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 import javax.sql.DataSource;
 import org.proactiverobotics.protocol.RunState;
 import org.proactiverobotics.protocol.Timing;
@@ -26,13 +30,55 @@ public final class JdbcWorldClock {
     private final JdbcRobotClock single;
     private final int[] robotIds;
     private final String ticksQuery;
+    /** Each robot's link, by position, or null: no reads with the ticks. */
+    private final JdbcRobotLink[] links;
+    private final String readsQuery;
+    /** What the last {@link #ticks} read besides the ticks, by position (with links only). */
+    private final List<Optional<CommandRecord>> commands;
+    private final List<List<SensorRequest>> pending;
 
     /**
      * @param dataSource the shared database (not closed by this clock)
      * @param robotIds   the world's robots' ids, in the world's order
      */
     public JdbcWorldClock(DataSource dataSource, int[] robotIds) {
+        this(dataSource, robotIds, null);
+    }
+
+    /**
+     * A clock that, in sync timing, reads every robot's newest command and pending requests with the
+     * engines' ticks, in the same query, and hands them to each robot's link once its engine served
+     * the step ({@link #handOff}): the robots' next {@code newestCommand} and {@code pendingRequests}
+     * are then no round trips, as {@link JdbcRobotLink#clock()} does for one robot (nothing writes them
+     * between an engine's iteration and its robot's next step).
+     *
+     * @param dataSource the shared database (not closed by this clock)
+     * @param robotIds   the world's robots' ids, in the world's order
+     * @param links      each robot's link, in the same order, or null
+     */
+    public JdbcWorldClock(DataSource dataSource, int[] robotIds, JdbcRobotLink[] links) {
         this.dataSource = Objects.requireNonNull(dataSource, "dataSource");
+        this.links = links == null ? null : links.clone();
+        this.commands = new ArrayList<>();
+        this.pending = new ArrayList<>();
+        StringBuilder reads = new StringBuilder("(SELECT 1 AS k, robot_id AS r, run_id AS a, step AS b, iteration AS c,"
+                + " '' AS s1, '' AS s2 FROM engine_clock WHERE robot_id IN (");
+        for (int i = 0; i < robotIds.length; i++) {
+            reads.append(i == 0 ? "?" : ", ?");
+            commands.add(Optional.empty());
+            pending.add(new ArrayList<>(4));
+        }
+        reads.append("))");
+        for (int i = 0; i < robotIds.length; i++) {
+            reads.append(" UNION ALL (SELECT 2, robot_id, id, iteration, sim_time_ms, scenario, command FROM engine_comments"
+                    + " WHERE robot_id = ? ORDER BY robot_id DESC, iteration DESC, id DESC LIMIT 1)");
+        }
+        reads.append(" UNION ALL (SELECT 3, robot_id, id, 0, 0, sensor, '' FROM sensor_requests WHERE robot_id IN (");
+        for (int i = 0; i < robotIds.length; i++) {
+            reads.append(i == 0 ? "?" : ", ?");
+        }
+        reads.append(") AND answered_sim_time_ms IS NULL)");
+        this.readsQuery = reads.toString();
         this.single = new JdbcRobotClock(dataSource); // no link: the world's loop polls, it holds no lock per robot
         this.robotIds = robotIds.clone();
         StringBuilder in = new StringBuilder();
@@ -69,6 +115,11 @@ public final class JdbcWorldClock {
             throws LinkException {
         if (count == 0) {
             return;
+        }
+        if (links != null) {
+            for (int k = 0; k < count; k++) {
+                links[positions[k]].dropHandOff(); // its engine may write once it sees this step
+            }
         }
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
@@ -109,6 +160,10 @@ public final class JdbcWorldClock {
      * @throws LinkException when it could not be read
      */
     public void ticks(EngineTick[] into) throws LinkException {
+        if (links != null) {
+            ticksWithReads(into);
+            return;
+        }
         java.util.Arrays.fill(into, null);
         try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(ticksQuery)) {
             for (int i = 0; i < robotIds.length; i++) {
@@ -124,6 +179,58 @@ public final class JdbcWorldClock {
             }
         } catch (SQLException e) {
             throw new LinkException("reading engine_clock of " + robotIds.length + " robot(s) failed: " + e.getMessage(), e);
+        }
+    }
+
+    private void ticksWithReads(EngineTick[] into) throws LinkException {
+        java.util.Arrays.fill(into, null);
+        for (int i = 0; i < robotIds.length; i++) {
+            commands.set(i, Optional.empty());
+            pending.get(i).clear();
+        }
+        try (Connection c = dataSource.getConnection(); PreparedStatement ps = c.prepareStatement(readsQuery)) {
+            int p = 1;
+            for (int pass = 0; pass < 3; pass++) {
+                for (int id : robotIds) {
+                    ps.setInt(p++, id);
+                }
+            }
+            try (ResultSet rs = ps.executeQuery()) {
+                while (rs.next()) {
+                    int position = position(rs.getInt(2));
+                    if (position < 0) {
+                        continue;
+                    }
+                    switch (rs.getInt(1)) {
+                        case 1 -> into[position] = new EngineTick(rs.getLong(3), rs.getLong(4), rs.getLong(5));
+                        case 2 -> commands.set(position, Optional.of(new CommandRecord(rs.getLong(3), rs.getLong(4),
+                                rs.getLong(5), rs.getString(6), rs.getString(7))));
+                        case 3 -> pending.get(position).add(new SensorRequest(rs.getLong(3), rs.getString(6)));
+                        default -> throw new SQLException("unknown row kind " + rs.getInt(1));
+                    }
+                }
+            }
+        } catch (SQLException e) {
+            throw new LinkException("reading engine_clock of " + robotIds.length + " robot(s) failed: " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Hands what the last {@link #ticks} read with the ticks to the links of robots whose engines
+     * served the step they wait for (sync timing only; nothing without links).
+     *
+     * @param positions the robots' positions (the first {@code count} are used)
+     * @param count     how many
+     */
+    public void handOff(int[] positions, int count) {
+        if (links == null) {
+            return;
+        }
+        for (int k = 0; k < count; k++) {
+            int p = positions[k];
+            List<SensorRequest> requests = pending.get(p);
+            requests.sort(Comparator.comparingLong(SensorRequest::id)); // as pendingRequests reads them: ORDER BY id
+            links[p].handOff(robotIds[p], commands.get(p), requests);
         }
     }
 
