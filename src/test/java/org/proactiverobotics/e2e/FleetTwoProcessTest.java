@@ -21,7 +21,7 @@ import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.sim2d.WorldFiles;
 
 /**
- * A world with several robots in two processes (DESIGN section 16), on MariaDB as the compose
+ * A world with several robots in two processes (docs/deployment.md), on MariaDB as the compose
  * services' least-privilege users: one {@code robot --world W} process runs the world with every
  * robot's controller, two engine processes share its robots by lease ({@code --robot-ids}; one
  * serves two robots on one thread, the other one). In sync timing every robot's run is the one

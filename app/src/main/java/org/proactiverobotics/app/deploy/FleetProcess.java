@@ -39,7 +39,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The robot process of a world with several robots (DESIGN section 16): one simulated world and,
+ * The robot process of a world with several robots (docs/deployment.md, "One world, several robots"): one simulated world and,
  * Webots-style, one {@link ProactiveController} per robot, each with its own robot id, rows and run,
  * driven by their engines through the database ({@code engine --robot-ids}, one process or several
  * sharing the robots by lease). Each step every robot whose mission goes on senses, the world's
