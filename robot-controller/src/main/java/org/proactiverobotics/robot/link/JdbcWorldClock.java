@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import javax.sql.DataSource;
+import org.proactiverobotics.db.RoundTrip;
 import org.proactiverobotics.protocol.RunState;
 import org.proactiverobotics.protocol.Timing;
 import org.proactiverobotics.robot.link.RobotClock.EngineTick;
@@ -36,6 +37,8 @@ public final class JdbcWorldClock {
     /** What the last {@link #ticks} read besides the ticks, by position (with links only). */
     private final List<Optional<CommandRecord>> commands;
     private final List<List<SensorRequest>> pending;
+    /** The step whose publication with answers failed with an unknown outcome, or -1. */
+    private long failedStep = -1;
 
     /**
      * @param dataSource the shared database (not closed by this clock)
@@ -59,6 +62,11 @@ public final class JdbcWorldClock {
     public JdbcWorldClock(DataSource dataSource, int[] robotIds, JdbcRobotLink[] links) {
         this.dataSource = Objects.requireNonNull(dataSource, "dataSource");
         this.links = links == null ? null : links.clone();
+        if (links != null) {
+            for (JdbcRobotLink link : links) {
+                link.deferAnswers(true); // each robot's answer commits with the world's publication: one flush a step
+            }
+        }
         this.commands = new ArrayList<>();
         this.pending = new ArrayList<>();
         StringBuilder reads = new StringBuilder("(SELECT 1 AS k, robot_id AS r, run_id AS a, step AS b, iteration AS c,"
@@ -121,6 +129,9 @@ public final class JdbcWorldClock {
                 links[positions[k]].dropHandOff(); // its engine may write once it sees this step
             }
         }
+        if (links != null && state == RunState.RUNNING && publishWithAnswers(positions, count, runIds, step, simTimeMs)) {
+            return;
+        }
         try (Connection c = dataSource.getConnection()) {
             c.setAutoCommit(false);
             try (PreparedStatement ps = c.prepareStatement(PUBLISH)) {
@@ -150,6 +161,85 @@ public final class JdbcWorldClock {
             }
         } catch (SQLException e) {
             throw new LinkException("publishing step " + step + " of " + count + " robot(s) failed: " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * The robots' kept answers and their steps in one multi-statement round trip and one commit.
+     * After a failure whose outcome was unknown, a step found published already is not written twice.
+     *
+     * @return false when no robot kept an answer (or the database takes no multi-statements): publish alone
+     */
+    private boolean publishWithAnswers(int[] positions, int count, long[] runIds, long step, long simTimeMs)
+            throws LinkException {
+        try (Connection c = dataSource.getConnection()) {
+            if (!RoundTrip.allowed(c)) {
+                return false;
+            }
+            SensorAnswer[] answers = new SensorAnswer[count];
+            if (failedStep == step && publishedAlready(c, robotIds[positions[0]], runIds[positions[0]], step)) {
+                for (int k = 0; k < count; k++) { // it did commit: the answers are written
+                    SensorAnswer a = links[positions[k]].addDeferredTo(new RoundTrip(), robotIds[positions[k]]);
+                    if (a != null) {
+                        links[positions[k]].deferredCommitted(robotIds[positions[k]], a);
+                    }
+                }
+                failedStep = -1;
+                return true;
+            }
+            RoundTrip trip = new RoundTrip();
+            boolean any = false;
+            for (int k = 0; k < count; k++) {
+                answers[k] = links[positions[k]].addDeferredTo(trip, robotIds[positions[k]]);
+                any |= answers[k] != null;
+            }
+            if (!any) {
+                return false;
+            }
+            int statementsBefore = trip.statements();
+            for (int k = 0; k < count; k++) {
+                int p = positions[k];
+                trip.add(PUBLISH, 5, (ps, i) -> {
+                    ps.setLong(i, step);
+                    ps.setLong(i + 1, simTimeMs);
+                    ps.setString(i + 2, RunState.RUNNING.name());
+                    ps.setInt(i + 3, robotIds[p]);
+                    ps.setLong(i + 4, runIds[p]);
+                });
+            }
+            int[] counts;
+            try {
+                counts = trip.commit(c);
+            } catch (SQLException e) {
+                failedStep = step;
+                throw e;
+            }
+            failedStep = -1;
+            for (int k = 0; k < count; k++) {
+                if (counts[counts.length - count + k] == 0) {
+                    throw new LinkException("robot_clock has no row for robot " + robotIds[positions[k]] + " run "
+                            + runIds[positions[k]] + ": another robot process with the same robot id started a run", null);
+                }
+            }
+            for (int k = 0; k < count; k++) {
+                if (answers[k] != null) {
+                    links[positions[k]].deferredCommitted(robotIds[positions[k]], answers[k]);
+                }
+            }
+            return statementsBefore >= 0;
+        } catch (SQLException e) {
+            throw new LinkException("publishing step " + step + " of " + count + " robot(s) with their answers failed: "
+                    + e.getMessage(), e);
+        }
+    }
+
+    private static boolean publishedAlready(Connection c, int robotId, long runId, long step) throws SQLException {
+        try (PreparedStatement ps = c.prepareStatement("SELECT step FROM robot_clock WHERE robot_id = ? AND run_id = ?")) {
+            ps.setInt(1, robotId);
+            ps.setLong(2, runId);
+            try (ResultSet rs = ps.executeQuery()) {
+                return rs.next() && rs.getLong(1) >= step;
+            }
         }
     }
 
