@@ -117,6 +117,16 @@ CREATE TABLE IF NOT EXISTS initial_pose (
   yaw_rad  DOUBLE NOT NULL
 );
 
+-- The robot's body as its engine must assume it (written by the robot process at the start of
+-- every run, from the world file's robot): its top wheel speed, metres per second, and the
+-- distance between its wheels (twice its radius), metres. An engine serving robots of different
+-- sizes drives each with its own; without a row it takes its --max-speed-mps / --axle-width-m.
+CREATE TABLE IF NOT EXISTS robot_body (
+  robot_id      INT    NOT NULL PRIMARY KEY,
+  max_speed_mps DOUBLE NOT NULL,
+  axle_width_m  DOUBLE NOT NULL
+);
+
 -- ======================================================================================
 -- Sensors beyond the paper's
 -- ======================================================================================

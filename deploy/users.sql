@@ -24,6 +24,7 @@ GRANT SELECT ON `@DATABASE@`.odometry TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.battery_recharged TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.recharge_station TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.initial_pose TO '@ENGINE_USER@'@'@HOST@';
+GRANT SELECT ON `@DATABASE@`.robot_body TO '@ENGINE_USER@'@'@HOST@';
 GRANT SELECT ON `@DATABASE@`.robot_clock TO '@ENGINE_USER@'@'@HOST@';
 -- it marks checkpoints reached or unreachable (and neither when a new robot run starts)
 GRANT SELECT, UPDATE (reached, reached_sim_time_ms, unreachable) ON `@DATABASE@`.checkpoints TO '@ENGINE_USER@'@'@HOST@';
@@ -54,6 +55,8 @@ GRANT SELECT, INSERT ON `@DATABASE@`.checkpoints TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT ON `@DATABASE@`.recharge_station TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT ON `@DATABASE@`.initial_pose TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT ON `@DATABASE@`.battery_recharged TO '@ROBOT_USER@'@'@HOST@';
+-- its body (speed, size), written at the start of every run
+GRANT SELECT, INSERT, UPDATE ON `@DATABASE@`.robot_body TO '@ROBOT_USER@'@'@HOST@';
 GRANT SELECT, INSERT, UPDATE ON `@DATABASE@`.robot_clock TO '@ROBOT_USER@'@'@HOST@';
 
 -- ---- The viewer (`watch`): reads what the live view shows, writes nothing ------------------

@@ -122,6 +122,16 @@ class LeastPrivilegeTest {
     }
 
     @Test
+    void theRobotAloneWritesItsBodyTheEngineReadsIt() throws Exception {
+        asRobot("INSERT INTO robot_body (robot_id, max_speed_mps, axle_width_m) VALUES (95, 0.35, 0.32)");
+        asRobot("UPDATE robot_body SET max_speed_mps = 0.4 WHERE robot_id = 95"); // each run writes it again
+        asEngine("SELECT max_speed_mps FROM robot_body WHERE robot_id = 95");
+        assertThatThrownBy(() -> asEngine("UPDATE robot_body SET max_speed_mps = 9 WHERE robot_id = 95"))
+                .hasMessageContaining("denied");
+        assertThatThrownBy(() -> asRobot("DELETE FROM robot_body WHERE robot_id = 95")).hasMessageContaining("denied");
+    }
+
+    @Test
     void neitherMayDropAlterCreateOrGrant() {
         for (String user : List.of("engine", "robot")) {
             for (String sql : List.of("DROP TABLE engine_comments", "ALTER TABLE gps_stored_values ADD COLUMN x INT",

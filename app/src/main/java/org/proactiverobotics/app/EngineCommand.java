@@ -12,6 +12,7 @@ import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
 import org.proactiverobotics.app.deploy.ProcessOptions;
 import org.proactiverobotics.app.deploy.JdbcEngineClock;
+import org.proactiverobotics.app.deploy.EngineBodies;
 import org.proactiverobotics.app.deploy.EngineLease;
 import org.proactiverobotics.app.deploy.EngineLoop;
 import org.proactiverobotics.app.deploy.RobotIds;
@@ -67,11 +68,13 @@ public final class EngineCommand implements Callable<Integer> {
     private boolean fresh;
 
     @Option(names = "--max-speed-mps", paramLabel = "V", defaultValue = "0.5",
-            description = "The robot's top wheel speed as the engine assumes it, m/s. Default: ${DEFAULT-VALUE}.")
+            description = "The robot's top wheel speed as the engine assumes it, m/s, for a robot whose process wrote no body"
+                    + " (robot_body); given, it overrides every robot's. Default: ${DEFAULT-VALUE}.")
     private double maxSpeedMps;
 
     @Option(names = "--axle-width-m", paramLabel = "W", defaultValue = "0.24",
-            description = "The distance between the robot's wheels, m. Default: ${DEFAULT-VALUE}.")
+            description = "The distance between the robot's wheels, m, for a robot whose process wrote no body (robot_body);"
+                    + " given, it overrides every robot's. Default: ${DEFAULT-VALUE}.")
     private double axleWidthM;
 
     @Option(names = "--period-ms", paramLabel = "MS", defaultValue = "32",
@@ -165,15 +168,17 @@ public final class EngineCommand implements Callable<Integer> {
             long leaseMs = Math.round(leaseS * 1000);
             EngineLoop.Options options = new EngineLoop.Options(choice.strategy(), fresh, periodMs, process.logEvery(), leaseMs);
             DriveProfile drive = new DriveProfile(maxSpeedMps, axleWidthM);
+            // each robot's own body, as its process wrote it, unless the options say otherwise for all
+            RobotServer.Bodies bodies = driveGiven() ? null : new EngineBodies(pool, drive);
             List<RobotServer> servers = new ArrayList<>();
             int[] standby = standbyIds == null ? new int[0] : RobotIds.parse(standbyIds);
             for (int[] group : new int[][] {ids, standby}) {
                 for (int id : group) {
                     EngineLease lease = new EngineLease(pool, id, name, leaseMs);
                     ScenarioPlugins plugins = choice.plugins();
-                    servers.add(new RobotServer(id, robot -> RobotEngine.builder().robotId(robot).database(pool).drive(drive)
-                            .plugins(plugins).guard(lease::confirm).build(), new JdbcEngineClock(pool, id), lease, options,
-                            group == standby, ids.length + standby.length > 1));
+                    servers.add(new RobotServer(id, (robot, profile) -> RobotEngine.builder().robotId(robot).database(pool)
+                            .drive(profile).plugins(plugins).guard(lease::confirm).build(), bodies, drive,
+                            new JdbcEngineClock(pool, id), lease, options, group == standby, ids.length + standby.length > 1));
                 }
             }
             if (ids.length > 1 || standby.length > 0) {
@@ -189,6 +194,12 @@ public final class EngineCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         }
+    }
+
+    /** @return whether --max-speed-mps or --axle-width-m was given: then it holds for every robot served */
+    private boolean driveGiven() {
+        var parsed = spec.commandLine().getParseResult();
+        return parsed.hasMatchedOption("--max-speed-mps") || parsed.hasMatchedOption("--axle-width-m");
     }
 
     private int[] ids() {

@@ -1,6 +1,11 @@
 package org.proactiverobotics.app;
 
+import com.google.gson.Gson;
+import com.google.gson.GsonBuilder;
+import com.google.gson.JsonArray;
+import com.google.gson.JsonObject;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -8,8 +13,10 @@ import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
+import org.proactiverobotics.app.deploy.FleetProcess;
 import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.deploy.ProcessOptions;
 import org.proactiverobotics.app.deploy.RobotProcess;
@@ -18,6 +25,7 @@ import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.deploy.StoredMission;
 import org.proactiverobotics.app.foxglove.McapRecorder;
 import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.RobotReport;
 import org.proactiverobotics.protocol.Timing;
 import org.proactiverobotics.sim2d.WorldSpec;
 import picocli.CommandLine.Command;
@@ -35,6 +43,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "robot",
         mixinStandardHelpOptions = true,
         description = {"Runs the simulated robot and its controller against a shared database, driven by an `engine` process.",
+                "A world with several robots: every robot's controller in this one process, each with its world id,"
+                        + " served by `engine --robot-ids`.",
                 "Sync timing (default): the robot acts on each step only once the engine has served it: the same run as `run`.",
                 "Realtime timing: the robot steps on the wall clock, the engine iterates on its own period.",
                 "Writes report.json and replay.html to the output directory (and run.mcap with --mcap).",
@@ -88,6 +98,10 @@ public final class RobotCommand implements Callable<Integer> {
             return Main.EXIT_BAD_INPUT;
         }
         String problem = problem();
+        if (problem == null && mcap && worldSpec.hasSeveralRobots()) {
+            problem = "--mcap does not take a world with several robots yet (" + worldSpec.name() + " has "
+                    + worldSpec.robots().size() + "): drop --mcap";
+        }
         if (problem != null) {
             err.println(problem);
             err.flush();
@@ -114,7 +128,8 @@ public final class RobotCommand implements Callable<Integer> {
         ShutdownSignal signal = ShutdownSignal.install();
         int code = Main.EXIT_INFRASTRUCTURE; // what an unexpected exception ends with
         try {
-            code = runMission(worldSpec, output, signal, stdout, err);
+            code = worldSpec.hasSeveralRobots() ? runWorld(worldSpec, output, signal, stdout, err)
+                    : runMission(worldSpec, output, signal, stdout, err);
         } finally {
             signal.finished(code);
         }
@@ -173,6 +188,76 @@ public final class RobotCommand implements Callable<Integer> {
         stdout.println("Report: " + outDir.resolve("report.json"));
         stdout.flush();
         return report.success() ? 0 : Main.EXIT_MISSION_FAILED;
+    }
+
+    /**
+     * A world with several robots: every robot's controller in this process, each with its own id
+     * (the world's), rows and run, their engines in {@code engine --robot-ids} (docs/deployment.md).
+     */
+    private int runWorld(WorldSpec worldSpec, OutputDirectory output, ShutdownSignal signal, PrintWriter stdout,
+                         PrintWriter err) {
+        Path outDir = output.path();
+        Timing mode = Timing.of(timing.toLowerCase(Locale.ROOT)).orElseThrow(); // checked by problem()
+        String ids = worldSpec.robots().stream().map(r -> String.valueOf(r.id())).collect(Collectors.joining(", "));
+        stdout.printf(Locale.ROOT, "World %s: %d robots (ids %s) on %s, %s timing%n", worldSpec.name(),
+                worldSpec.robots().size(), ids, DbOptions.redacted(db.url()), mode.label());
+        if (spec.commandLine().getParseResult().hasMatchedOption("--robot-id")) {
+            stdout.printf(Locale.ROOT, "--robot-id %d is not used: the world gives its robots' ids%n", process.robotId());
+        }
+        stdout.flush();
+        MissionReport report;
+        FleetProcess fleet = new FleetProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor,
+                process.logEvery(), process.heartbeat(), noise.level().sensorNoise()), signal);
+        try {
+            report = fleet.run();
+        } catch (DatabaseWait.Unreachable e) {
+            output.removeIfEmpty();
+            err.println(e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        } catch (StoredMission.Mismatch e) {
+            output.removeIfEmpty();
+            err.println(e.getMessage());
+            err.flush();
+            return Main.EXIT_BAD_INPUT;
+        }
+        try {
+            writeWorldReport(report, outDir.resolve("report.json"));
+            fleet.writeReplay(outDir.resolve("replay.html"), report);
+        } catch (IOException e) {
+            err.println("cannot write the report in " + outDir + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
+        }
+        for (RobotReport r : report.robots()) {
+            stdout.printf(Locale.ROOT, "  robot %d: %s, checkpoints %d/%d, %.1f m, %s (%d with robots), battery min %.1f %%, %s%n",
+                    r.id(), r.outcome(), r.checkpointsReached(), r.checkpointsTotal(), r.distanceM(),
+                    Plural.of(r.collisions(), "collision"), r.robotCollisions(), r.minBattery(),
+                    Plural.of(r.engineIterations(), "engine iteration"));
+        }
+        stdout.printf(Locale.ROOT, "%s: %s, checkpoints %d/%d, %.1f s simulated in %.2f s (%.1fx real time), %s, %.1f m,"
+                        + " %s, battery min %.1f %%, %s%n",
+                report.world(), report.outcome(), report.checkpointsReached(), report.checkpointsTotal(), report.simTimeS(),
+                report.wallTimeS(), report.realTimeFactor(), Plural.of(report.controlSteps(), "robot step"),
+                report.distanceM(), Plural.of(report.collisions(), "collision"), report.minBattery(),
+                Plural.of(report.recharges(), "recharge"));
+        stdout.println("Report: " + outDir.resolve("report.json"));
+        stdout.flush();
+        return report.success() ? 0 : Main.EXIT_MISSION_FAILED;
+    }
+
+    /**
+     * report.json of a world with several robots, as {@code run} writes it, without what the robot
+     * process cannot know: each robot's rule failures (the robot's user may not read rule_failures).
+     */
+    static void writeWorldReport(MissionReport report, Path file) throws IOException {
+        Gson gson = new GsonBuilder().setPrettyPrinting().disableHtmlEscaping().create();
+        JsonObject json = gson.toJsonTree(report).getAsJsonObject();
+        JsonArray robots = json.getAsJsonArray("robots");
+        for (int i = 0; robots != null && i < robots.size(); i++) {
+            robots.get(i).getAsJsonObject().remove("ruleFailures");
+        }
+        Files.writeString(file, gson.toJson(json) + "\n", StandardCharsets.UTF_8);
     }
 
     /** A mission that never started leaves no run.mcap behind. */

@@ -207,6 +207,27 @@ public final class RobotProcess {
     }
 
     /**
+     * Writes the robot's body ({@link RobotBody}) for its engine before its run begins; a database
+     * without the table (made before it) gets one warning, and the engine drives by its options.
+     *
+     * @param pool    the robot's pool
+     * @param robotId the robot
+     * @param robot   its world file entry
+     * @throws SQLException when the database fails otherwise (the caller retries)
+     */
+    static void writeBody(HikariDataSource pool, int robotId, WorldSpec.Robot robot) throws SQLException {
+        try {
+            RobotBody.write(pool, robotId, RobotBody.of(robot));
+        } catch (SQLException e) {
+            if (!EngineBodies.missingOrDenied(e)) {
+                throw e;
+            }
+            LOG.warn("robot {}: robot_body cannot be written ({}): its engine drives by its --max-speed-mps and"
+                    + " --axle-width-m (run `db init` to add the table)", robotId, RobotServer.oneLine(e));
+        }
+    }
+
+    /**
      * A robot may not take over another world's mission rows (see {@link StoredMission}). This is
      * the pool's first use: on a busy machine its first connection can come later than the pool's
      * short wait although the database answers, so a failure waiting can cure is retried after the
@@ -220,6 +241,7 @@ public final class RobotProcess {
         for (int attempt = 1; ; attempt++) {
             try {
                 StoredMission.check(pool, robotId, Missions.of(world));
+                writeBody(pool, robotId, world.robot());
                 if (attempt > 1) {
                     LOG.info("robot {}: stored mission read (attempt {})", robotId, attempt);
                 }

@@ -8,6 +8,7 @@ import org.proactiverobotics.app.deploy.EngineClock.RobotTick;
 import org.proactiverobotics.app.deploy.EngineClock.Served;
 import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.engine.CorruptStateException;
+import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -39,8 +40,34 @@ public final class RobotServer {
     /** In a fleet, a robot whose run ended this long ago is dropped, seconds. */
     static final long DROP_AFTER_S = 60;
 
+    /** Builds a robot's engine for a drive profile. */
+    @FunctionalInterface
+    public interface Engines {
+        /**
+         * @param robotId the robot
+         * @param drive   the drive profile its engine assumes
+         * @return the engine
+         */
+        RobotEngine build(int robotId, DriveProfile drive);
+    }
+
+    /** The drive profile a robot's engine must assume as a run is taken up (its {@code robot_body} row, or a fallback). */
+    @FunctionalInterface
+    public interface Bodies {
+        /**
+         * @param robotId the robot
+         * @return its drive profile
+         * @throws SQLException when it cannot be read
+         */
+        DriveProfile drive(int robotId) throws SQLException;
+    }
+
     private final int robotId;
-    private final IntFunction<RobotEngine> engines;
+    private final Engines engines;
+    /** Where the drive profile comes from at each run taken up; null: the engine's first one throughout. */
+    private final Bodies bodies;
+    /** The drive profile {@link #side} was built with (null: built without one, by the one-profile constructor). */
+    private DriveProfile sideDrive;
     private final EngineClock clock;
     private final EngineLease lease;
     private final EngineLoop.Options options;
@@ -90,8 +117,31 @@ public final class RobotServer {
      */
     public RobotServer(int robotId, IntFunction<RobotEngine> engines, EngineClock clock, EngineLease lease,
                        EngineLoop.Options options, boolean standby, boolean oneOfSeveral) {
+        this(robotId, (robot, drive) -> engines.apply(robot), null, DriveProfile.DEFAULT, clock, lease, options, standby,
+                oneOfSeveral);
+    }
+
+    /**
+     * A server whose robot's engine drives with the robot's own profile: read as each run is taken
+     * up, and the engine built anew when it differs from the one it was built with (a fleet's robots
+     * may differ in size and speed; docs/deployment.md).
+     *
+     * @param robotId      the robot
+     * @param engines      builds the robot's engine for a drive profile
+     * @param bodies       the robot's drive profile as a run is taken up, or null: {@code drive} throughout
+     * @param drive        the profile the engine is first built with (before any run is seen)
+     * @param clock        the robot's handshake rows
+     * @param lease        the robot's lease row, as this engine holds it
+     * @param options      how to run
+     * @param standby      as in {@link #RobotServer(int, IntFunction, EngineClock, EngineLease, EngineLoop.Options, boolean, boolean)}
+     * @param oneOfSeveral as there
+     */
+    public RobotServer(int robotId, Engines engines, Bodies bodies, DriveProfile drive, EngineClock clock,
+                       EngineLease lease, EngineLoop.Options options, boolean standby, boolean oneOfSeveral) {
         this.robotId = robotId;
         this.engines = engines;
+        this.bodies = bodies;
+        this.sideDrive = drive;
         this.clock = clock;
         this.lease = lease;
         this.options = options;
@@ -209,7 +259,7 @@ public final class RobotServer {
             }
             nextTakeNanos = now + TAKE_EVERY_NANOS;
             if (side == null) {
-                side = engines.apply(robotId); // built before the lease is taken: a failure here leaves nothing half done
+                side = engines.build(robotId, sideDrive); // built before the lease is taken: a failure here leaves nothing half done
             }
             if (!lease.tryTake()) {
                 if (!waitingLogged) {
@@ -312,6 +362,7 @@ public final class RobotServer {
 
     /** Takes up the robot's run: resumes it when it was served before, else starts it fresh. */
     private void adopt(RobotTick robot) throws SQLException {
+        fitBody();
         java.util.Optional<Served> last = clock.served();
         boolean sameRun = last.isPresent() && last.get().runId() == robot.runId();
         if (sameRun && (!firstContact || !options.fresh())) {
@@ -350,6 +401,23 @@ public final class RobotServer {
         firstContact = false;
         finishedLogged = false;
         nextTickNanos = System.nanoTime();
+    }
+
+    /**
+     * The robot's process wrote its body before it began the run: an engine built for another
+     * profile is built anew (before its state is resumed or started, so nothing of it is lost).
+     */
+    private void fitBody() throws SQLException {
+        if (bodies == null) {
+            return;
+        }
+        DriveProfile drive = bodies.drive(robotId);
+        if (!drive.equals(sideDrive)) {
+            side = engines.build(robotId, drive);
+            sideDrive = drive;
+            LOG.info("engine {}: robot {} drives at up to {} m/s with {} m between its wheels", robotId, robotId,
+                    String.format(Locale.ROOT, "%.2f", drive.maxSpeedMps()), String.format(Locale.ROOT, "%.3f", drive.axleWidthM()));
+        }
     }
 
     private void failed(Exception e) {

@@ -157,6 +157,36 @@ public final class JdbcRobotLink implements RobotLink {
     }
 
     /**
+     * For a world's publication of several robots' steps in one transaction ({@link JdbcWorldClock}):
+     * adds the answer kept for the robot's step to the round trip.
+     *
+     * @param trip    the world's round trip
+     * @param robotId the robot
+     * @return the answer added, or null when none was kept
+     */
+    synchronized SensorAnswer addDeferredTo(RoundTrip trip, int robotId) throws SQLException {
+        Deferred d = deferred;
+        if (d == null || d.robotId() != robotId) {
+            return null;
+        }
+        write(trip, robotId, d.answer());
+        return d.answer();
+    }
+
+    /**
+     * The world's publication that carried the kept answer committed: it is written.
+     *
+     * @param robotId the robot
+     * @param answer  the answer {@link #addDeferredTo} added
+     */
+    synchronized void deferredCommitted(int robotId, SensorAnswer answer) {
+        if (deferred != null && deferred.answer() == answer) {
+            deferred = null;
+        }
+        remember(robotId, answer);
+    }
+
+    /**
      * Commits the answer kept for the step's publication together with it, as one round trip.
      *
      * @param robotId   the robot

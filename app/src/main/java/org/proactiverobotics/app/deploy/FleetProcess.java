@@ -1,0 +1,352 @@
+package org.proactiverobotics.app.deploy;
+
+import com.zaxxer.hikari.HikariDataSource;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.sql.SQLException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.LockSupport;
+import org.proactiverobotics.app.Plural;
+import org.proactiverobotics.app.mission.Mission;
+import org.proactiverobotics.app.mission.MissionReport;
+import org.proactiverobotics.app.mission.ScenarioColours;
+import org.proactiverobotics.app.replay.ReplayData;
+import org.proactiverobotics.app.replay.ReplayPage;
+import org.proactiverobotics.app.replay.RobotTracer;
+import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.ScenarioPlugins;
+import org.proactiverobotics.app.mission.Outcome;
+import org.proactiverobotics.app.mission.RobotReport;
+import org.proactiverobotics.db.Backoff;
+import org.proactiverobotics.protocol.RunState;
+import org.proactiverobotics.protocol.Timing;
+import org.proactiverobotics.robot.Missions;
+import org.proactiverobotics.robot.ProactiveController;
+import org.proactiverobotics.robot.RobotConfig;
+import org.proactiverobotics.robot.WorldLockstep;
+import org.proactiverobotics.robot.link.JdbcRobotLink;
+import org.proactiverobotics.robot.link.JdbcWorldClock;
+import org.proactiverobotics.robot.link.RobotPool;
+import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.Simulation;
+import org.proactiverobotics.sim2d.WorldSpec;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The robot process of a world with several robots (docs/deployment.md, "One world, several robots"): one simulated world and,
+ * Webots-style, one {@link ProactiveController} per robot, each with its own robot id, rows and run,
+ * driven by their engines through the database ({@code engine --robot-ids}, one process or several
+ * sharing the robots by lease). Each step every robot whose mission goes on senses, the world's
+ * {@link WorldLockstep} publishes their step and (sync timing) waits until every one of their
+ * engines served it, every such robot acts, then the world steps once; a robot whose mission ended
+ * stands still, a body the others see. This is {@code run}'s loop for such a world, with the engines
+ * in another process: in sync timing the run is {@code run}'s, step for step. At the end, the report
+ * from the simulator's ground truth, with every robot's own part.
+ */
+public final class FleetProcess {
+
+    private static final Logger LOG = LoggerFactory.getLogger(FleetProcess.class);
+
+    private final RobotProcess.Options options;
+    private final ShutdownSignal signal;
+    /** What the first robot knew, step by step: replay.html (the page shows one robot for now). */
+    private final ReplayData replay;
+
+    /**
+     * @param options what to run ({@code robotId} is not used: the ids are the world's)
+     * @param signal  the stop request (SIGTERM / Ctrl-C)
+     */
+    public FleetProcess(RobotProcess.Options options, ShutdownSignal signal) {
+        if (!options.world().hasSeveralRobots()) {
+            throw new IllegalArgumentException("world " + options.world().name() + " has one robot: RobotProcess runs it");
+        }
+        this.options = options;
+        this.signal = signal;
+        this.replay = new ReplayData(Map.of(), options.world().robots().get(0).robot().sensorAnglesDeg().size());
+    }
+
+    /**
+     * Writes replay.html: what the world's first robot knew, step by step (after {@link #run()}), as
+     * {@code run} writes it for such a world.
+     *
+     * @param file   where
+     * @param report the run's report
+     * @throws IOException when it cannot be written
+     */
+    public void writeReplay(Path file, MissionReport report) throws IOException {
+        WorldSpec world = options.world();
+        String summary = "robot " + world.robots().get(0).id() + " of " + world.robots().size() + ": "
+                + Mission.summary(report) + ", robot process";
+        ReplayPage.write(file, ReplayPage.Source.ROBOT, world.forRobot(0),
+                ScenarioColours.of(RobotEngine.freshSlots(ScenarioPlugins.none())), replay, summary);
+    }
+
+    /** One robot of the world: its controller and what its part of the report gathers. */
+    private static final class Lane {
+        final int index;
+        final int robotId;
+        final Map<String, Long> commandWins = new TreeMap<>();
+        ProactiveController controller;
+        long controlSteps;
+        Outcome outcome;
+        long endSimTimeMs;
+
+        Lane(int index, int robotId) {
+            this.index = index;
+            this.robotId = robotId;
+        }
+    }
+
+    /**
+     * Waits for the database, starts every robot's run, waits for their engines, runs the world to
+     * the end of every mission (or the time limit).
+     *
+     * @return the report; outcome {@link Outcome#STOPPED} when a stop came first
+     * @throws DatabaseWait.Unreachable when the database is not usable in time
+     */
+    public MissionReport run() throws DatabaseWait.Unreachable {
+        WorldSpec world = options.world();
+        Simulation sim = new Simulation(world, options.noise());
+        RobotTracer tracer = new RobotTracer(sim, replay); // the simulation's first robot
+        List<Lane> lanes = new ArrayList<>();
+        int[] ids = new int[world.robots().size()];
+        for (int i = 0; i < ids.length; i++) {
+            ids[i] = world.robots().get(i).id();
+            lanes.add(new Lane(i, ids[i]));
+        }
+        if (!DatabaseWait.await(options.db(), "robot_clock", signal::stopRequested)) {
+            return report(sim, lanes, null, 0, null);
+        }
+        boolean sync = options.timing() == Timing.SYNC;
+        try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password())) {
+            try {
+                JdbcRobotLink[] links = new JdbcRobotLink[lanes.size()];
+                for (Lane lane : lanes) {
+                    if (!prepare(pool, lane, world)) {
+                        return report(sim, lanes, null, 0, null);
+                    }
+                    links[lane.index] = new JdbcRobotLink(pool);
+                    lane.controller = new ProactiveController(sim, lane.index, links[lane.index],
+                            RobotConfig.defaults(lane.robotId));
+                    lane.controller.onCommand(c -> {
+                        lane.commandWins.merge(c.scenario(), 1L, Long::sum);
+                        if (lane.index == 0) {
+                            tracer.command(c);
+                        }
+                    });
+                }
+                // in sync timing each robot's newest command and requests come with the engines' ticks: no reads of their own
+                WorldLockstep lockstep = new WorldLockstep(new JdbcWorldClock(pool, ids, sync ? links : null), ids, options.timing(),
+                        signal::stopRequested, i -> lanes.get(i).outcome != null);
+                LOG.info("world {}: {} robots ({}), {} timing", world.name(), ids.length, idList(ids), options.timing().label());
+                if (!lockstep.begin()) {
+                    return report(sim, lanes, lockstep, 0, null);
+                }
+                long start = System.nanoTime();
+                MissionReport.Timing timing = loop(sim, lanes, lockstep, tracer, sync ? 0 : options.realTimeFactor());
+                double wallS = (System.nanoTime() - start) / 1e9;
+                boolean stopped = lanes.stream().anyMatch(l -> l.outcome == null);
+                lockstep.finish(stopped ? RunState.STOPPED : RunState.FINISHED);
+                return report(sim, lanes, lockstep, wallS, timing);
+            } finally {
+                for (Lane lane : lanes) {
+                    if (lane.controller != null) {
+                        lane.controller.close();
+                    }
+                }
+            }
+        }
+    }
+
+    /** The loop of {@code run}'s fleet mission, the engines' iterations replaced by the handshake. */
+    private MissionReport.Timing loop(Simulation sim, List<Lane> lanes, WorldLockstep lockstep, RobotTracer tracer,
+                                      double realTimeFactor) {
+        Lane first = lanes.get(0);
+        List<Lane> active = new ArrayList<>(lanes);
+        long robotNs = 0;
+        long waitNs = 0;
+        long physicsNs = 0;
+        long step = 0;
+        long startNanos = System.nanoTime();
+        long startSimMs = sim.simTimeMs();
+        while (!active.isEmpty() && !signal.stopRequested()) {
+            long t0 = System.nanoTime();
+            for (Lane lane : active) {
+                lane.controller.sense();
+            }
+            long t1 = System.nanoTime();
+            boolean firstActive = first.outcome == null;
+            if (firstActive) {
+                tracer.sensed();
+            }
+            if (!lockstep.sensed(step + 1, sim.simTimeMs())) {
+                break;
+            }
+            step++;
+            long t2 = System.nanoTime();
+            for (Lane lane : active) {
+                lane.controller.act();
+            }
+            long t3 = System.nanoTime();
+            sim.step();
+            long t4 = System.nanoTime();
+            if (firstActive) {
+                tracer.stepped(lockstep.lastTick(0).map(t -> t.iteration()).orElse(step));
+            }
+            for (Lane lane : active) {
+                lane.controlSteps++;
+                lane.outcome = Outcome.of(sim, lane.index, lane.controller.checkpointUnreachable());
+                if (lane.outcome != null) {
+                    lane.endSimTimeMs = sim.simTimeMs();
+                    sim.robot(lane.index).setWheelSpeeds(0.0, 0.0); // done: it stays where it is, a body the others see
+                    LOG.info("robot {}: {} at {} s simulated", lane.robotId, lane.outcome,
+                            String.format(Locale.ROOT, "%.1f", lane.endSimTimeMs / 1000.0));
+                }
+            }
+            active.removeIf(l -> l.outcome != null);
+            robotNs += (t1 - t0) + (t3 - t2);
+            waitNs += t2 - t1;
+            physicsNs += t4 - t3;
+            options.heartbeat().beat();
+            if (step % options.logEvery() == 0) {
+                status(sim, lanes, step, (System.nanoTime() - startNanos) / 1e9);
+            }
+            if (realTimeFactor > 0) {
+                long due = startNanos + (long) ((sim.simTimeMs() - startSimMs) * 1_000_000L / realTimeFactor);
+                long wait = due - System.nanoTime();
+                if (wait > 0) {
+                    LockSupport.parkNanos(wait);
+                }
+            }
+        }
+        for (Lane lane : lanes) {
+            sim.robot(lane.index).setWheelSpeeds(0.0, 0.0);
+        }
+        double n = Math.max(1, step);
+        return MissionReport.Timing.rounded(physicsNs / 1e6 / n, robotNs / 1e6 / n, waitNs / 1e6 / n);
+    }
+
+    /** One line for the world, then one per robot, as the one-robot process's status line says it. */
+    private static void status(Simulation sim, List<Lane> lanes, long step, double wallS) {
+        double simS = sim.simTimeMs() / 1000.0;
+        LOG.info("world: step {}, {} s simulated ({}x real time)", step, String.format(Locale.ROOT, "%.1f", simS),
+                String.format(Locale.ROOT, "%.1f", simS / Math.max(wallS, 1e-9)));
+        for (Lane lane : lanes) {
+            GroundTruth truth = sim.groundTruth(lane.index);
+            LOG.info("robot {}: step {}, {} s simulated, checkpoints {}/{}, battery {} %, {} m, {}{}", lane.robotId,
+                    lane.controlSteps, String.format(Locale.ROOT, "%.1f", simS), truth.checkpointsReached(),
+                    truth.checkpointsTotal(), String.format(Locale.ROOT, "%.1f", truth.batteryPct()),
+                    String.format(Locale.ROOT, "%.1f", truth.distanceM()), Plural.of(truth.collisions(), "collision"),
+                    lane.outcome == null ? "" : ", " + lane.outcome);
+        }
+    }
+
+    /**
+     * Checks the robot's stored mission against the world (a robot may not take over another world's rows)
+     * and writes its body for its engine, retrying while the database is busy or away.
+     *
+     * @return true once done, false when a stop came first
+     */
+    private boolean prepare(HikariDataSource pool, Lane lane, WorldSpec world) throws DatabaseWait.Unreachable {
+        WorldSpec own = world.forRobot(lane.index);
+        Backoff backoff = new Backoff(100, 2_000, System::nanoTime);
+        for (int attempt = 1; ; attempt++) {
+            try {
+                StoredMission.check(pool, lane.robotId, Missions.of(own));
+                RobotProcess.writeBody(pool, lane.robotId, own.robot());
+                return true;
+            } catch (SQLException e) {
+                DatabaseProblem problem = DatabaseProblem.of(e, options.db().url(), "checkpoints");
+                if (!problem.worthWaiting()) {
+                    throw new DatabaseWait.Unreachable(problem, problem.message());
+                }
+                LOG.warn("robot {}: reading the stored mission failed (attempt {}): {}; retrying once the database answers",
+                        lane.robotId, attempt, problem.message());
+                backoff.failed();
+                while (!backoff.ready()) {
+                    if (signal.stopRequested()) {
+                        return false;
+                    }
+                    LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(20));
+                }
+                if (!DatabaseWait.await(options.db(), "checkpoints", signal::stopRequested)) {
+                    return false;
+                }
+            }
+        }
+    }
+
+    /**
+     * The whole run's report, as {@code run} sums it (success only when every robot accomplished its
+     * mission; the outcome the first robot's that did not; sums and minima over the robots), without
+     * what this process cannot see: the strategy, the rule failures and the engines' beliefs.
+     */
+    private MissionReport report(Simulation sim, List<Lane> lanes, WorldLockstep lockstep, double wallS,
+                                 MissionReport.Timing timing) {
+        List<RobotReport> robots = new ArrayList<>();
+        Outcome outcome = Outcome.MISSION_ACCOMPLISHED;
+        int reached = 0;
+        int total = 0;
+        long controlSteps = 0;
+        long iterations = 0;
+        double distance = 0;
+        int collisions = 0;
+        int robotCollisions = 0;
+        double minClearance = Double.POSITIVE_INFINITY;
+        double minBattery = Double.POSITIVE_INFINITY;
+        double finalBattery = Double.POSITIVE_INFINITY;
+        int recharges = 0;
+        Map<String, Long> wins = new TreeMap<>();
+        for (Lane lane : lanes) {
+            GroundTruth t = sim.groundTruth(lane.index);
+            Outcome end = lane.outcome != null ? lane.outcome : Outcome.STOPPED;
+            long endMs = lane.outcome != null ? lane.endSimTimeMs : sim.simTimeMs();
+            long laneIterations = lockstep == null ? 0 : lockstep.lastTick(lane.index).map(k -> k.iteration()).orElse(0L);
+            RobotReport r = RobotReport.of(lane.robotId, t, end, endMs, lane.controlSteps, laneIterations,
+                    lane.commandWins, 0, null);
+            robots.add(r);
+            if (outcome == Outcome.MISSION_ACCOMPLISHED && !r.success()) {
+                outcome = r.outcome();
+            }
+            reached += r.checkpointsReached();
+            total += r.checkpointsTotal();
+            controlSteps += r.controlSteps();
+            iterations += r.engineIterations();
+            distance += t.distanceM();
+            collisions += t.collisions();
+            robotCollisions += t.robotCollisions();
+            minClearance = Math.min(minClearance, t.minClearanceM());
+            minBattery = Math.min(minBattery, t.minBatteryPct());
+            finalBattery = Math.min(finalBattery, t.batteryPct());
+            recharges += t.recharges();
+            r.commandWins().forEach((k, v) -> wins.merge(k, v, Long::sum));
+        }
+        double simS = sim.simTimeMs() / 1000.0;
+        return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, null,
+                MissionReport.databaseKind(options.db().url()), reached, total, simS, round(wallS, 3),
+                round(simS / Math.max(wallS, 1e-9), 1), controlSteps, iterations,
+                round(distance, 3), collisions, robotCollisions, round(minClearance, 4),
+                round(minBattery, 2), round(finalBattery, 2), recharges, wins, null, null,
+                timing, List.copyOf(robots));
+    }
+
+    /** As report.json rounds. */
+    private static double round(double value, int decimals) {
+        double scale = Math.pow(10, decimals);
+        return Math.round(value * scale) / scale;
+    }
+
+    private static String idList(int[] ids) {
+        StringBuilder sb = new StringBuilder(ids.length == 1 ? "id " : "ids ");
+        for (int i = 0; i < ids.length; i++) {
+            sb.append(i == 0 ? "" : ", ").append(ids[i]);
+        }
+        return sb.toString();
+    }
+}
