@@ -20,7 +20,7 @@ import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
- * Worlds with several robots through the real command line (issue 34, DESIGN section 16): {@code validate} and
+ * Worlds with several robots through the real command line (issue 34, docs/world-file.md "Several robots"): {@code validate} and
  * {@code run} refuse a bad fleet with its key path, exit 2, nothing written; {@code generate --robots N} draws
  * valid worlds whose every mission is solvable, the same for the same seed, and one robot as before.
  */

@@ -13,10 +13,10 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** World files with several robots (docs/world-file.md, "Several robots"; DESIGN section 16). */
+/** World files with several robots (docs/world-file.md, "Several robots"). */
 class FleetWorldFilesTest {
 
-    /** DESIGN section 16's example, with the rest of a world round it. */
+    /** The manual's fleet example, with the rest of a world round it. */
     static final String FLEET = """
             { "name": "two", "arena": { "radiusM": 5 },
               "robots": [

@@ -38,7 +38,7 @@ import org.proactiverobotics.sim2d.SvgRenderer;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
- * The headless mission of a world with several robots (DESIGN section 16), in one process: one simulation, and
+ * The headless mission of a world with several robots (docs/world-file.md, "Several robots"), in one process: one simulation, and
  * per robot an engine (its own state, scenarios, strategy and rows under the robot's id) and a controller. Each
  * step every robot whose mission goes on senses, every such engine iterates, every such robot acts, then the world
  * steps once. A robot whose mission is over (accomplished, battery flat, a checkpoint unreachable) stops and stays
