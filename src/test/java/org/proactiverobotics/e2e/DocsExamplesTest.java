@@ -109,7 +109,7 @@ class DocsExamplesTest extends CommandLineTest {
                         .as(e.where() + ": marked " + INVALID_WORLD + " but the parser accepts it")
                         .isInstanceOf(WorldValidationException.class);
                 invalidWorlds++;
-            } else if (o != null && o.has("checkpoints") && o.has("arena")) {
+            } else if (o != null && (o.has("checkpoints") || o.has("robots")) && o.has("arena")) {
                 try {
                     WorldFiles.parse(o.toString(), e.where());
                 } catch (WorldValidationException ex) {

@@ -51,6 +51,12 @@ public final class GenerateCommand implements Callable<Integer> {
                     + " and the planner checks each world on this footprint. Default: ${DEFAULT-VALUE}.")
     private double robotRadiusM;
 
+    @Option(names = "--robots", paramLabel = "N", defaultValue = "1",
+            description = "Robots in each world (1 to 8), their missions crossing each other's paths: each starts near"
+                    + " another's checkpoint and has checkpoints near the others' starts; a station per two robots"
+                    + " (at most 3). Default: ${DEFAULT-VALUE}.")
+    private int robots;
+
     @Option(names = "--force", description = "Write into --out even if it is not empty.")
     private boolean force;
 
@@ -72,10 +78,11 @@ public final class GenerateCommand implements Callable<Integer> {
         List<WorldSpec> worlds = new ArrayList<>();
         try {
             for (int i = 1; i <= count; i++) {
-                worlds.add(generator.world(seed, i));
+                worlds.add(generator.world(seed, i, robots));
             }
         } catch (IllegalStateException e) { // nothing is written before every world is drawn
-            err.println(e.getMessage() + " for a robot of radius " + robotRadiusM + " m: try another --seed or --robot-radius");
+            err.println(e.getMessage() + " for a robot of radius " + robotRadiusM + " m: try another --seed or --robot-radius"
+                    + (robots > 1 ? ", or fewer --robots" : ""));
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
@@ -90,6 +97,10 @@ public final class GenerateCommand implements Callable<Integer> {
             return Main.EXIT_INFRASTRUCTURE;
         }
         for (WorldSpec w : worlds) {
+            if (w.hasSeveralRobots()) {
+                fleetLine(stdout, w);
+                continue;
+            }
             Solvability plan = Solvability.of(w);
             stdout.printf(Locale.ROOT, "%s: %s, %s, planned path %.1f m, %s, maxSimTimeS %.0f%n",
                     out.resolve(w.name() + ".json"), Plural.of(w.obstacles().size(), "obstacle"),
@@ -98,6 +109,18 @@ public final class GenerateCommand implements Callable<Integer> {
         }
         stdout.flush();
         return 0;
+    }
+
+    /** e.g. {@code out/rooms-001.json: 16 obstacles, 4 robots, 11 checkpoints, 2 stations, longest planned path 14.2 m, ...} */
+    private void fleetLine(PrintWriter stdout, WorldSpec w) {
+        List<Solvability> plans = Solvability.ofEachRobot(w);
+        int checkpoints = w.robots().stream().mapToInt(r -> r.checkpoints().size()).sum();
+        stdout.printf(Locale.ROOT, "%s: %s, %s, %s, %s, longest planned path %.1f m, %s, maxSimTimeS %.0f%n",
+                out.resolve(w.name() + ".json"), Plural.of(w.obstacles().size(), "obstacle"),
+                Plural.of(w.robots().size(), "robot"), Plural.of(checkpoints, "checkpoint"),
+                Plural.of(w.rechargeStations().size(), "station"),
+                plans.stream().mapToDouble(Solvability::lengthM).max().orElse(0),
+                Plural.of(plans.stream().mapToInt(Solvability::recharges).sum(), "recharge"), w.maxSimTimeS());
     }
 
     private String problem() {
@@ -115,6 +138,9 @@ public final class GenerateCommand implements Callable<Integer> {
         }
         if (count < 1 || count > 10_000) {
             return "--count must be from 1 to 10000: " + count;
+        }
+        if (robots < 1 || robots > WorldGenerator.MAX_ROBOTS) {
+            return "--robots must be from 1 to " + WorldGenerator.MAX_ROBOTS + ": " + robots;
         }
         return OutputDirectory.refusal(out, force);
     }

@@ -15,7 +15,8 @@ import java.util.Objects;
  * Draws a world to SVG: arena, obstacles, numbered checkpoints, the recharge station, the start pose, a 1 m
  * scale bar, and optionally the robot (heading and sensor rays), a trajectory coloured by category (for
  * instance which scenario's command was driving; one colour per category) and labelled markers (for instance
- * recharge stops).
+ * recharge stops). In a world of several robots every robot's start and checkpoints are drawn in a colour of its
+ * own, every station numbered, and {@link #robotPath} and {@link #robotAt} draw each robot's path and body.
  * <p>
  * World coordinates are metres with +y up; the picture flips y so that it looks as the world does.
  * Usage: {@code new SvgRenderer(spec).robot(sim).trajectory(points).render()}.
@@ -64,6 +65,9 @@ public final class SvgRenderer {
 
     private static final String[] PALETTE = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b",
             "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+    /** One colour per robot of a world with several (dark enough to read on white; not the trajectory's palette order). */
+    private static final String[] ROBOT_PALETTE = {"#103060", "#b03060", "#207020", "#a05a00", "#6040a0", "#00707a",
+            "#704020", "#505050"};
     private static final double MARGIN_M = 0.6;
     private static final int SIZE_PX = 800;
 
@@ -73,6 +77,10 @@ public final class SvgRenderer {
     /** Where each {@link #trajectory(List)} call's points begin: a path of its own, not joined to the one before. */
     private final java.util.Set<Integer> pathStarts = new java.util.HashSet<>();
     private final List<Marker> markers = new ArrayList<>();
+    /** Each robot's path in a world of several, by its index in {@link WorldSpec#robots()}. */
+    private final Map<Integer, List<TrajectoryPoint>> robotPaths = new java.util.TreeMap<>();
+    /** Each robot's body in a world of several, by its index. */
+    private final Map<Integer, RobotPose> robotPoses = new java.util.TreeMap<>();
     private RobotPose robot;
     private String title;
 
@@ -114,6 +122,31 @@ public final class SvgRenderer {
     public SvgRenderer trajectory(List<TrajectoryPoint> points) {
         pathStarts.add(trajectory.size());
         trajectory.addAll(points);
+        return this;
+    }
+
+    /**
+     * In a world of several robots, adds one robot's path, drawn in that robot's colour (the points' categories
+     * are not drawn: the colour says whose path it is).
+     *
+     * @param robotIndex the robot's index in {@link WorldSpec#robots()}
+     * @param points     its path, in order
+     */
+    public SvgRenderer robotPath(int robotIndex, List<TrajectoryPoint> points) {
+        Objects.checkIndex(robotIndex, spec.robots().size());
+        robotPaths.computeIfAbsent(robotIndex, k -> new ArrayList<>()).addAll(points);
+        return this;
+    }
+
+    /**
+     * In a world of several robots, draws one robot's body (its radius) in its colour, with its rays if the pose has any.
+     *
+     * @param robotIndex the robot's index in {@link WorldSpec#robots()}
+     * @param pose       where it is
+     */
+    public SvgRenderer robotAt(int robotIndex, RobotPose pose) {
+        Objects.checkIndex(robotIndex, spec.robots().size());
+        robotPoses.put(robotIndex, pose);
         return this;
     }
 
@@ -199,8 +232,10 @@ public final class SvgRenderer {
         checkpoints(sb);
         start(sb, font);
         trajectory(sb);
+        robotPaths(sb);
         markers(sb, font);
         robot(sb);
+        robotBodies(sb);
         checkpointLabels(sb, font); // after the robot, which ends on the last checkpoint
         scaleBar(sb, v, font);
         legend(sb, v, font);
@@ -228,13 +263,26 @@ public final class SvgRenderer {
     }
 
     private void station(StringBuilder sb, double font) {
-        WorldSpec.RechargeStation s = spec.rechargeStation();
-        sb.append(f("<g id=\"station\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#c8f0c8\" stroke=\"#2a8a2a\" stroke-width=\"0.03\"/>"
-                        + "<text x=\"%s\" y=\"%s\" text-anchor=\"middle\" fill=\"#2a8a2a\">recharge</text></g>\n",
-                n(s.x()), n(-s.y()), n(s.radiusM()), n(s.x()), n(-s.y() - s.radiusM() - font * 0.4)));
+        if (spec.rechargeStations().size() == 1) {
+            station(sb, font, spec.rechargeStation(), "station", "recharge");
+            return;
+        }
+        for (int i = 0; i < spec.rechargeStations().size(); i++) {
+            station(sb, font, spec.rechargeStations().get(i), "station-" + (i + 1), "recharge " + (i + 1));
+        }
+    }
+
+    private void station(StringBuilder sb, double font, WorldSpec.RechargeStation s, String id, String label) {
+        sb.append(f("<g id=\"%s\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#c8f0c8\" stroke=\"#2a8a2a\" stroke-width=\"0.03\"/>"
+                        + "<text x=\"%s\" y=\"%s\" text-anchor=\"middle\" fill=\"#2a8a2a\">%s</text></g>\n",
+                esc(id), n(s.x()), n(-s.y()), n(s.radiusM()), n(s.x()), n(-s.y() - s.radiusM() - font * 0.4), esc(label)));
     }
 
     private void checkpoints(StringBuilder sb) {
+        if (spec.hasSeveralRobots()) {
+            fleetCheckpoints(sb);
+            return;
+        }
         sb.append("<g id=\"checkpoints\">\n");
         for (WorldSpec.Checkpoint c : spec.checkpoints()) {
             sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#fff3c4\" stroke=\"#c08a00\" stroke-width=\"0.03\" stroke-dasharray=\"0.06 0.04\"/>\n",
@@ -243,14 +291,51 @@ public final class SvgRenderer {
         sb.append("</g>\n");
     }
 
+    /** Every robot's checkpoints, outlined in that robot's colour. */
+    private void fleetCheckpoints(StringBuilder sb) {
+        sb.append("<g id=\"checkpoints\">\n");
+        for (int k = 0; k < spec.robots().size(); k++) {
+            for (WorldSpec.Checkpoint c : spec.robots().get(k).checkpoints()) {
+                sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#fff3c4\" stroke=\"%s\" stroke-width=\"0.03\" stroke-dasharray=\"0.06 0.04\"/>\n",
+                        n(c.x()), n(-c.y()), n(spec.checkpointRadiusM()), robotColour(k)));
+            }
+        }
+        sb.append("</g>\n");
+    }
+
+    /** The colour of the robot at index k of {@link WorldSpec#robots()}: its start, checkpoints and labels. */
+    private static String robotColour(int k) {
+        return ROBOT_PALETTE[k % ROBOT_PALETTE.length];
+    }
+
     /** The checkpoints' numbers, above each circle by more than the robot's radius: a robot on it never hides them. */
     private void checkpointLabels(StringBuilder sb, double font) {
+        if (spec.hasSeveralRobots()) {
+            fleetCheckpointLabels(sb);
+            return;
+        }
         sb.append("<g id=\"checkpoint-labels\" fill=\"#805c00\" font-weight=\"bold\" text-anchor=\"middle\""
                 + " stroke=\"white\" stroke-width=\"0.05\" paint-order=\"stroke\">\n");
         List<WorldSpec.Checkpoint> cps = spec.checkpoints();
         for (int i = 0; i < cps.size(); i++) {
             WorldSpec.Checkpoint c = cps.get(i);
             sb.append(f("  <text x=\"%s\" y=\"%s\">%d</text>\n", n(c.x()), n(-c.y() - labelOffsetM()), i + 1));
+        }
+        sb.append("</g>\n");
+    }
+
+    /** Each robot's checkpoints numbered from 1 in visiting order, "robot id.number", in the robot's colour. */
+    private void fleetCheckpointLabels(StringBuilder sb) {
+        sb.append("<g id=\"checkpoint-labels\" font-weight=\"bold\" text-anchor=\"middle\""
+                + " stroke=\"white\" stroke-width=\"0.05\" paint-order=\"stroke\">\n");
+        for (int k = 0; k < spec.robots().size(); k++) {
+            WorldSpec.RobotEntry entry = spec.robots().get(k);
+            double offset = spec.checkpointRadiusM() + entry.robot().radiusM() + 0.05;
+            for (int i = 0; i < entry.checkpoints().size(); i++) {
+                WorldSpec.Checkpoint c = entry.checkpoints().get(i);
+                sb.append(f("  <text x=\"%s\" y=\"%s\" fill=\"%s\">%d.%d</text>\n", n(c.x()), n(-c.y() - offset),
+                        robotColour(k), entry.id(), i + 1));
+            }
         }
         sb.append("</g>\n");
     }
@@ -262,6 +347,13 @@ public final class SvgRenderer {
 
     /** Where the robot started: a hollow disc with its heading, labelled. */
     private void start(StringBuilder sb, double font) {
+        if (spec.hasSeveralRobots()) {
+            for (int k = 0; k < spec.robots().size(); k++) {
+                WorldSpec.RobotEntry entry = spec.robots().get(k);
+                startOf(sb, font, entry.robot(), "start-" + entry.id(), robotColour(k), "robot " + entry.id());
+            }
+            return;
+        }
         WorldSpec.Robot r = spec.robot();
         double heading = Math.toRadians(r.headingDeg());
         sb.append(f("<g id=\"start\" stroke=\"#103060\" stroke-width=\"0.03\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"white\"/>"
@@ -269,6 +361,17 @@ public final class SvgRenderer {
                         + "<text x=\"%s\" y=\"%s\" stroke=\"none\" fill=\"#103060\" dominant-baseline=\"central\">start</text></g>\n",
                 n(r.x()), n(-r.y()), n(r.radiusM()), n(r.x()), n(-r.y()), n(r.x() + r.radiusM() * Math.cos(heading)),
                 n(-(r.y() + r.radiusM() * Math.sin(heading))), n(r.x() + r.radiusM() + font * 0.4), n(-r.y())));
+    }
+
+    /** One robot's start in a world of several: a hollow disc with its heading, in its colour, labelled with its id. */
+    private void startOf(StringBuilder sb, double font, WorldSpec.Robot r, String id, String colour, String label) {
+        double heading = Math.toRadians(r.headingDeg());
+        sb.append(f("<g id=\"%s\" stroke=\"%s\" stroke-width=\"0.03\"><circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"white\"/>"
+                        + "<line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\"/>"
+                        + "<text x=\"%s\" y=\"%s\" stroke=\"none\" fill=\"%s\" dominant-baseline=\"central\">%s</text></g>\n",
+                esc(id), colour, n(r.x()), n(-r.y()), n(r.radiusM()), n(r.x()), n(-r.y()),
+                n(r.x() + r.radiusM() * Math.cos(heading)), n(-(r.y() + r.radiusM() * Math.sin(heading))),
+                n(r.x() + r.radiusM() + font * 0.4), n(-r.y()), colour, esc(label)));
     }
 
     /** A 1 m bar at the bottom left, labelled. */
@@ -306,6 +409,35 @@ public final class SvgRenderer {
         sb.append("</g>\n");
     }
 
+    private void robotPaths(StringBuilder sb) {
+        for (Map.Entry<Integer, List<TrajectoryPoint>> e : robotPaths.entrySet()) {
+            if (e.getValue().isEmpty()) {
+                continue;
+            }
+            sb.append(f("<polyline id=\"path-%d\" fill=\"none\" stroke=\"%s\" stroke-width=\"0.04\" stroke-linejoin=\"round\""
+                    + " stroke-linecap=\"round\" points=\"", spec.robots().get(e.getKey()).id(), robotColour(e.getKey())));
+            for (TrajectoryPoint p : e.getValue()) {
+                sb.append(n(p.x())).append(',').append(n(-p.y())).append(' ');
+            }
+            sb.append("\"/>\n");
+        }
+    }
+
+    private void robotBodies(StringBuilder sb) {
+        for (Map.Entry<Integer, RobotPose> e : robotPoses.entrySet()) {
+            RobotPose pose = e.getValue();
+            double rr = spec.robots().get(e.getKey()).robot().radiusM();
+            sb.append(f("<g id=\"robot-%d\">\n", spec.robots().get(e.getKey()).id()));
+            rays(sb, pose, rr);
+            sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"%s\" stroke=\"#103060\" stroke-width=\"0.02\"/>\n",
+                    n(pose.x()), n(-pose.y()), n(rr), robotColour(e.getKey())));
+            sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"white\" stroke-width=\"0.03\"/>\n",
+                    n(pose.x()), n(-pose.y()), n(pose.x() + rr * Math.cos(pose.headingRad())),
+                    n(-(pose.y() + rr * Math.sin(pose.headingRad())))));
+            sb.append("</g>\n");
+        }
+    }
+
     private String colourOf(String category) {
         String key = category == null ? "" : category;
         return colours.computeIfAbsent(key, k -> {
@@ -339,20 +471,25 @@ public final class SvgRenderer {
         double x = robot.x();
         double y = robot.y();
         sb.append("<g id=\"robot\">\n");
-        for (int i = 0; i < robot.rayAnglesRad().length; i++) {
-            double a = robot.headingRad() + robot.rayAnglesRad()[i];
-            double len = robot.rayLengthsM()[i];
-            double x0 = x + rr * Math.cos(a);
-            double y0 = y + rr * Math.sin(a);
-            boolean hit = len < robot.rangeM();
-            sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"0.015\"/>\n",
-                    n(x0), n(-y0), n(x0 + len * Math.cos(a)), n(-(y0 + len * Math.sin(a))), hit ? "#e03030" : "#9ab"));
-        }
+        rays(sb, robot, rr);
         sb.append(f("  <circle cx=\"%s\" cy=\"%s\" r=\"%s\" fill=\"#3070d0\" stroke=\"#103060\" stroke-width=\"0.02\"/>\n",
                 n(x), n(-y), n(rr)));
         sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"white\" stroke-width=\"0.03\"/>\n",
                 n(x), n(-y), n(x + rr * Math.cos(robot.headingRad())), n(-(y + rr * Math.sin(robot.headingRad())))));
         sb.append("</g>\n");
+    }
+
+    /** One line per distance sensor from the rim, red where it hit something. */
+    private void rays(StringBuilder sb, RobotPose pose, double rr) {
+        for (int i = 0; i < pose.rayAnglesRad().length; i++) {
+            double a = pose.headingRad() + pose.rayAnglesRad()[i];
+            double len = pose.rayLengthsM()[i];
+            double x0 = pose.x() + rr * Math.cos(a);
+            double y0 = pose.y() + rr * Math.sin(a);
+            boolean hit = len < pose.rangeM();
+            sb.append(f("  <line x1=\"%s\" y1=\"%s\" x2=\"%s\" y2=\"%s\" stroke=\"%s\" stroke-width=\"0.015\"/>\n",
+                    n(x0), n(-y0), n(x0 + len * Math.cos(a)), n(-(y0 + len * Math.sin(a))), hit ? "#e03030" : "#9ab"));
+        }
     }
 
     private void legend(StringBuilder sb, View v, double font) {

@@ -35,13 +35,16 @@ final class WorldParser {
 
     private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_-]+");
     private static final Set<String> ROOT_KEYS = Set.of("name", "timeStepMs", "maxSimTimeS", "seed", "arena", "robot",
-            "obstacles", "checkpoints", "checkpointRadiusM", "rechargeStation", "battery", "map");
+            "obstacles", "checkpoints", "checkpointRadiusM", "rechargeStation", "battery", "map", "robots", "rechargeStations");
     private static final Set<String> ARENA_KEYS = Set.of("radiusM", "widthM", "heightM", "x", "y");
     private static final Set<String> MAP_KEYS = Set.of("file", "cellM");
     private static final Set<String> ROBOT_KEYS = Set.of("x", "y", "headingDeg", "radiusM", "maxSpeedMps", "sensorRangeM",
             "sensorAnglesDeg");
     /** The most distance sensors a robot may carry (a laser scanner's rays, say). */
     static final int MAX_SENSORS = 360;
+    /** A {@code robots} entry: every key {@code robot} takes, its id and its own checkpoints. */
+    private static final Set<String> FLEET_ROBOT_KEYS = Set.of("id", "x", "y", "headingDeg", "radiusM", "maxSpeedMps",
+            "sensorRangeM", "sensorAnglesDeg", "checkpoints");
     private static final Set<String> BOX_KEYS = Set.of("shape", "x", "y", "widthM", "heightM", "angleDeg");
     private static final Set<String> CIRCLE_KEYS = Set.of("shape", "x", "y", "radiusM");
     private static final Set<String> POINT_KEYS = Set.of("x", "y");
@@ -88,7 +91,9 @@ final class WorldParser {
         Long seed = seed(root);
         OccupancyGrid map = map(root);
         WorldSpec.Arena arena = arena(root, map);
-        WorldSpec.Robot robot = robot(root);
+        boolean fleet = root.has("robots");
+        List<WorldSpec.RobotEntry> fleetRobots = fleet ? robots(root) : null;
+        WorldSpec.Robot robot = fleet ? null : robot(root, "robot");
         List<WorldSpec.Obstacle> obstacles = obstacles(root);
         if (obstacles != null) {
             listedObstacles = obstacles.size();
@@ -98,31 +103,97 @@ final class WorldParser {
             all.addAll(BoxCover.boxes(map));
             obstacles = Collections.unmodifiableList(all);
         }
-        List<WorldSpec.Checkpoint> checkpoints = checkpoints(root);
+        List<WorldSpec.Checkpoint> checkpoints = fleet ? null : checkpoints(root, "");
         Double checkpointRadiusM = number(root, "", "checkpointRadiusM", false, Bound.POSITIVE,
                 WorldSpec.DEFAULT_CHECKPOINT_RADIUS_M);
-        WorldSpec.RechargeStation station = station(root);
+        List<WorldSpec.RechargeStation> stations = stations(root);
         WorldSpec.Battery battery = battery(root);
 
-        if (arena != null && robot != null && obstacles != null) {
-            placement("robot", "start", robot.x(), robot.y(), arena, robot, obstacles);
-            if (checkpoints != null) {
-                for (int i = 0; i < checkpoints.size(); i++) {
-                    WorldSpec.Checkpoint c = checkpoints.get(i);
-                    if (c != null) {
-                        placement("checkpoints[" + i + "]", "checkpoint", c.x(), c.y(), arena, robot, obstacles);
+        if (arena != null && obstacles != null) {
+            if (robot != null) {
+                missionPlacement("robot", "", robot, checkpoints, arena, obstacles);
+            }
+            if (fleetRobots != null) {
+                for (int i = 0; i < fleetRobots.size(); i++) {
+                    WorldSpec.RobotEntry entry = fleetRobots.get(i);
+                    if (entry != null) {
+                        missionPlacement("robots[" + i + "]", "robots[" + i + "].", entry.robot(), entry.checkpoints(),
+                                arena, obstacles);
                     }
                 }
             }
-            if (station != null) {
-                placement("rechargeStation", "station", station.x(), station.y(), arena, robot, obstacles);
+            // a station must be where a robot's centre can be: checked for the widest robot, the one it fits worst
+            WorldSpec.Robot widest = fleetRobots == null ? robot : widest(fleetRobots);
+            if (stations != null && widest != null) {
+                String key = root.has("rechargeStations") ? "rechargeStations[%d]" : "rechargeStation";
+                for (int i = 0; i < stations.size(); i++) {
+                    WorldSpec.RechargeStation st = stations.get(i);
+                    if (st != null) {
+                        placement(String.format(Locale.ROOT, key, i), "station", st.x(), st.y(), arena, widest, obstacles);
+                    }
+                }
             }
+        }
+        if (fleetRobots != null) {
+            overlaps(fleetRobots);
         }
         if (!problems.isEmpty()) {
             throw new WorldValidationException(source, problems);
         }
+        if (fleet) {
+            return WorldSpec.fleet(name, timeStepMs, maxSimTimeS, seed, arena, fleetRobots, obstacles, checkpointRadiusM,
+                    stations, battery);
+        }
         return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, robot, obstacles, checkpoints,
-                checkpointRadiusM, station, battery);
+                checkpointRadiusM, stations.get(0), battery, null, stations);
+    }
+
+    /** Checks a robot's start and each of its checkpoints: inside the arena and clear of every obstacle. */
+    private void missionPlacement(String robotPath, String checkpointPrefix, WorldSpec.Robot robot,
+                                  List<WorldSpec.Checkpoint> checkpoints, WorldSpec.Arena arena,
+                                  List<WorldSpec.Obstacle> obstacles) {
+        placement(robotPath, "start", robot.x(), robot.y(), arena, robot, obstacles);
+        if (checkpoints == null) {
+            return;
+        }
+        for (int i = 0; i < checkpoints.size(); i++) {
+            WorldSpec.Checkpoint c = checkpoints.get(i);
+            if (c != null) {
+                placement(checkpointPrefix + "checkpoints[" + i + "]", "checkpoint", c.x(), c.y(), arena, robot, obstacles);
+            }
+        }
+    }
+
+    private static WorldSpec.Robot widest(List<WorldSpec.RobotEntry> robots) {
+        WorldSpec.Robot widest = null;
+        for (WorldSpec.RobotEntry e : robots) {
+            if (e != null && (widest == null || e.robot().radiusM() > widest.radiusM())) {
+                widest = e.robot();
+            }
+        }
+        return widest;
+    }
+
+    /** Two robots may not start with their bodies overlapping (centres closer than the sum of their radii). */
+    private void overlaps(List<WorldSpec.RobotEntry> robots) {
+        for (int j = 0; j < robots.size(); j++) {
+            for (int i = 0; i < j; i++) {
+                WorldSpec.RobotEntry a = robots.get(i);
+                WorldSpec.RobotEntry b = robots.get(j);
+                if (a == null || b == null) {
+                    continue;
+                }
+                double apart = Math.hypot(a.robot().x() - b.robot().x(), a.robot().y() - b.robot().y());
+                double reach = a.robot().radiusM() + b.robot().radiusM();
+                if (apart < reach) {
+                    problems.add(String.format(Locale.ROOT,
+                            "robots[%d]: start (%s, %s) is inside robots[%d] (start (%s, %s)): the centres are %s m apart,"
+                                    + " closer than the radii's sum %s m",
+                            j, fmt(b.robot().x()), fmt(b.robot().y()), i, fmt(a.robot().x()), fmt(a.robot().y()), fmt(apart),
+                            fmt(reach)));
+                }
+            }
+        }
     }
 
     /** Parses strictly (no comments, no NaN, one value); a syntax error becomes the only problem. */
@@ -277,19 +348,25 @@ final class WorldParser {
         return w == null || h == null || x == null || y == null ? null : WorldSpec.Arena.rectangle(w, h, x, y);
     }
 
-    private WorldSpec.Robot robot(JsonObject root) {
+    /** The one robot of a file without {@code robots}; in one with, no {@code robot} may be given. */
+    private WorldSpec.Robot robot(JsonObject root, String path) {
         JsonObject o = object(root, "", "robot", true);
         if (o == null) {
             return null;
         }
-        unknownKeys(o, "robot", ROBOT_KEYS);
-        Double x = number(o, "robot", "x", true, Bound.ANY, null);
-        Double y = number(o, "robot", "y", true, Bound.ANY, null);
-        Double h = number(o, "robot", "headingDeg", true, Bound.ANY, null);
-        Double r = number(o, "robot", "radiusM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_RADIUS_M);
-        Double v = number(o, "robot", "maxSpeedMps", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS);
-        Double s = number(o, "robot", "sensorRangeM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M);
-        List<Double> angles = sensorAngles(o);
+        unknownKeys(o, path, ROBOT_KEYS);
+        return robotProperties(o, path);
+    }
+
+    /** @return the robot described by an object's pose and property keys, or null after recording a problem */
+    private WorldSpec.Robot robotProperties(JsonObject o, String path) {
+        Double x = number(o, path, "x", true, Bound.ANY, null);
+        Double y = number(o, path, "y", true, Bound.ANY, null);
+        Double h = number(o, path, "headingDeg", true, Bound.ANY, null);
+        Double r = number(o, path, "radiusM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_RADIUS_M);
+        Double v = number(o, path, "maxSpeedMps", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_MAX_SPEED_MPS);
+        Double s = number(o, path, "sensorRangeM", false, Bound.POSITIVE, WorldSpec.Robot.DEFAULT_SENSOR_RANGE_M);
+        List<Double> angles = sensorAngles(o, path);
         if (x == null || y == null || h == null || r == null || v == null || s == null || angles == null) {
             return null;
         }
@@ -297,8 +374,8 @@ final class WorldParser {
     }
 
     /** @return the distance sensors' angles, the default eight when absent, or null after recording a problem */
-    private List<Double> sensorAngles(JsonObject robot) {
-        String p = "robot.sensorAnglesDeg";
+    private List<Double> sensorAngles(JsonObject robot, String path) {
+        String p = path + ".sensorAnglesDeg";
         JsonElement e = robot.get("sensorAnglesDeg");
         if (e == null) {
             return WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG;
@@ -399,24 +476,29 @@ final class WorldParser {
     }
 
     /** @return the checkpoints, possibly with null entries for invalid ones, or null when unusable */
-    private List<WorldSpec.Checkpoint> checkpoints(JsonObject root) {
-        JsonElement e = root.get("checkpoints");
+    /**
+     * @param owner  the object holding {@code checkpoints}: the root, or a {@code robots} entry
+     * @param prefix the owner's key path and a dot ("" for the root)
+     */
+    private List<WorldSpec.Checkpoint> checkpoints(JsonObject owner, String prefix) {
+        String key = prefix + "checkpoints";
+        JsonElement e = owner.get("checkpoints");
         if (e == null) {
-            problems.add("checkpoints: missing required key");
+            problems.add(key + ": missing required key");
             return null;
         }
         if (!e.isJsonArray()) {
-            problems.add("checkpoints: expected an array, got " + kind(e));
+            problems.add(key + ": expected an array, got " + kind(e));
             return null;
         }
         JsonArray array = e.getAsJsonArray();
         if (array.isEmpty()) {
-            problems.add("checkpoints: must list at least one checkpoint");
+            problems.add(key + ": must list at least one checkpoint");
             return null;
         }
         List<WorldSpec.Checkpoint> result = new ArrayList<>();
         for (int i = 0; i < array.size(); i++) {
-            String path = "checkpoints[" + i + "]";
+            String path = key + "[" + i + "]";
             JsonElement c = array.get(i);
             if (!c.isJsonObject()) {
                 problems.add(path + ": expected an object, got " + kind(c));
@@ -431,16 +513,124 @@ final class WorldParser {
         return java.util.Collections.unmodifiableList(result);
     }
 
-    private WorldSpec.RechargeStation station(JsonObject root) {
-        JsonObject o = object(root, "", "rechargeStation", true);
-        if (o == null) {
+    /**
+     * @return the stations: {@code rechargeStation} alone, or every one of {@code rechargeStations}; null when
+     *         unusable, with null entries for invalid ones (a problem recorded for each)
+     */
+    private List<WorldSpec.RechargeStation> stations(JsonObject root) {
+        if (!root.has("rechargeStations")) {
+            JsonObject o = object(root, "", "rechargeStation", true);
+            WorldSpec.RechargeStation st = o == null ? null : station(o, "rechargeStation");
+            return st == null ? null : List.of(st);
+        }
+        if (root.has("rechargeStation")) {
+            problems.add("rechargeStation: give rechargeStation (one) or rechargeStations (several), not both");
             return null;
         }
-        unknownKeys(o, "rechargeStation", STATION_KEYS);
-        Double x = number(o, "rechargeStation", "x", true, Bound.ANY, null);
-        Double y = number(o, "rechargeStation", "y", true, Bound.ANY, null);
-        Double r = number(o, "rechargeStation", "radiusM", true, Bound.POSITIVE, null);
+        JsonElement e = root.get("rechargeStations");
+        if (!e.isJsonArray()) {
+            problems.add("rechargeStations: expected an array, got " + kind(e));
+            return null;
+        }
+        JsonArray array = e.getAsJsonArray();
+        if (array.isEmpty()) {
+            problems.add("rechargeStations: must list at least one station");
+            return null;
+        }
+        List<WorldSpec.RechargeStation> result = new ArrayList<>();
+        boolean allValid = true;
+        for (int i = 0; i < array.size(); i++) {
+            String path = "rechargeStations[" + i + "]";
+            JsonElement s = array.get(i);
+            WorldSpec.RechargeStation st = null;
+            if (!s.isJsonObject()) {
+                problems.add(path + ": expected an object, got " + kind(s));
+            } else {
+                st = station(s.getAsJsonObject(), path);
+            }
+            allValid &= st != null;
+            result.add(st);
+        }
+        return allValid ? Collections.unmodifiableList(result) : null;
+    }
+
+    private WorldSpec.RechargeStation station(JsonObject o, String path) {
+        unknownKeys(o, path, STATION_KEYS);
+        Double x = number(o, path, "x", true, Bound.ANY, null);
+        Double y = number(o, path, "y", true, Bound.ANY, null);
+        Double r = number(o, path, "radiusM", true, Bound.POSITIVE, null);
         return x == null || y == null || r == null ? null : new WorldSpec.RechargeStation(x, y, r);
+    }
+
+    /**
+     * The robots of a world that lists several (docs/world-file.md, "Several robots"): each entry takes every key
+     * {@code robot} takes, a positive id distinct from the others' and its own {@code checkpoints}.
+     *
+     * @return the robots, with null entries for invalid ones, or null when the list is unusable
+     */
+    private List<WorldSpec.RobotEntry> robots(JsonObject root) {
+        if (root.has("robot")) {
+            problems.add("robot: a world with \"robots\" describes each robot there; give robots or robot, not both");
+        }
+        if (root.has("checkpoints")) {
+            problems.add("checkpoints: a world with \"robots\" gives each robot its checkpoints in its entry;"
+                    + " give robots or checkpoints, not both");
+        }
+        JsonElement e = root.get("robots");
+        if (!e.isJsonArray()) {
+            problems.add("robots: expected an array, got " + kind(e));
+            return null;
+        }
+        JsonArray array = e.getAsJsonArray();
+        if (array.isEmpty()) {
+            problems.add("robots: must list at least one robot");
+            return null;
+        }
+        List<WorldSpec.RobotEntry> result = new ArrayList<>();
+        Map<Integer, Integer> indexOfId = new java.util.HashMap<>();
+        for (int i = 0; i < array.size(); i++) {
+            String path = "robots[" + i + "]";
+            JsonElement element = array.get(i);
+            if (!element.isJsonObject()) {
+                problems.add(path + ": expected an object, got " + kind(element));
+                result.add(null);
+                continue;
+            }
+            JsonObject o = element.getAsJsonObject();
+            unknownKeys(o, path, FLEET_ROBOT_KEYS);
+            Integer id = robotId(o, path);
+            if (id != null && indexOfId.putIfAbsent(id, i) != null) {
+                problems.add(path + ".id: " + id + " is robots[" + indexOfId.get(id) + "]'s id too; ids must be distinct");
+            }
+            WorldSpec.Robot robot = robotProperties(o, path);
+            List<WorldSpec.Checkpoint> checkpoints = checkpoints(o, path + ".");
+            if (id == null || robot == null || checkpoints == null || checkpoints.contains(null)) {
+                result.add(null);
+                continue;
+            }
+            result.add(new WorldSpec.RobotEntry(id, robot, checkpoints));
+        }
+        return Collections.unmodifiableList(result);
+    }
+
+    /** @return a {@code robots} entry's id (a positive integer), or null after recording a problem */
+    private Integer robotId(JsonObject o, String path) {
+        String p = path + ".id";
+        JsonElement e = o.get("id");
+        if (e == null) {
+            problems.add(p + ": missing required key");
+            return null;
+        }
+        if (!isNumber(e)) {
+            problems.add(p + ": expected an integer, got " + kind(e));
+            return null;
+        }
+        double d = e.getAsDouble();
+        if (d != Math.rint(d) || d < 1 || d > Integer.MAX_VALUE) {
+            problems.add(p + ": must be a positive integer (the robot's robot_id), got " + e.getAsString());
+            return null;
+        }
+        return (int) d;
     }
 
     private WorldSpec.Battery battery(JsonObject root) {

@@ -130,6 +130,44 @@ public final class GridPlanner {
         pairs.parallelStream().forEach(p -> distance(p[0], p[1], p[2], p[3]));
     }
 
+    /**
+     * The cells a robot starting at (x, y) can reach: free cells joined by free cells side by side (a
+     * diagonal step needs both cells beside it free, so these are the cells {@link #distance} finds a path to).
+     *
+     * @return one flag per cell, row by row; none set when (x, y) is blocked or off the grid
+     */
+    public boolean[] reachableFrom(double x, double y) {
+        boolean[] reached = new boolean[free.length];
+        int start = cell(x, y);
+        if (start < 0 || !free[start]) {
+            return reached;
+        }
+        int[] queue = new int[free.length];
+        int head = 0;
+        int tail = 0;
+        queue[tail++] = start;
+        reached[start] = true;
+        while (head < tail) {
+            int c = queue[head++];
+            int cx = c % size;
+            int cy = c / size;
+            int[] next = {cx > 0 ? c - 1 : -1, cx < size - 1 ? c + 1 : -1, cy > 0 ? c - size : -1, cy < rows - 1 ? c + size : -1};
+            for (int n : next) {
+                if (n >= 0 && free[n] && !reached[n]) {
+                    reached[n] = true;
+                    queue[tail++] = n;
+                }
+            }
+        }
+        return reached;
+    }
+
+    /** @return whether (x, y)'s cell is among the cells flagged (by {@link #reachableFrom}) */
+    public boolean within(boolean[] cells, double x, double y) {
+        int c = cell(x, y);
+        return c >= 0 && cells[c];
+    }
+
     /** A* from cell to cell: the length in metres, or infinity. */
     private double search(int start, int goal) {
         double[] g = new double[size * rows];

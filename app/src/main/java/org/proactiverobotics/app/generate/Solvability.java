@@ -1,7 +1,9 @@
 package org.proactiverobotics.app.generate;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -25,6 +27,43 @@ public record Solvability(boolean solvable, double lengthM, int recharges, Strin
      */
     public static Solvability of(WorldSpec world) {
         return of(world, new GridPlanner(world, CLEARANCE_M));
+    }
+
+    /**
+     * Each robot's mission on its own, in {@link WorldSpec#robots()}'s order: its start, its checkpoints and
+     * the station nearest its start (as the crow flies), the other robots left out. A yes for each is what a
+     * world with several robots can promise: robots that meet must still make way for each other.
+     *
+     * @param world a world, with one robot or several
+     * @return one verdict per robot
+     */
+    public static List<Solvability> ofEachRobot(WorldSpec world) {
+        Map<Double, GridPlanner> planners = new HashMap<>(); // one grid per body size: robots may differ
+        List<Solvability> verdicts = new ArrayList<>();
+        for (int i = 0; i < world.robots().size(); i++) {
+            WorldSpec mission = missionOf(world, i);
+            GridPlanner planner = planners.computeIfAbsent(mission.robot().radiusM(), r -> new GridPlanner(mission, CLEARANCE_M));
+            verdicts.add(of(mission, planner));
+        }
+        return verdicts;
+    }
+
+    /**
+     * @param world a world
+     * @param index a robot's position in {@link WorldSpec#robots()}
+     * @return that robot's mission as a one-robot world whose station is the one nearest its start
+     */
+    public static WorldSpec missionOf(WorldSpec world, int index) {
+        WorldSpec.RobotEntry entry = world.robots().get(index);
+        WorldSpec.RechargeStation nearest = world.rechargeStation();
+        for (WorldSpec.RechargeStation st : world.rechargeStations()) {
+            if (Math.hypot(st.x() - entry.robot().x(), st.y() - entry.robot().y())
+                    < Math.hypot(nearest.x() - entry.robot().x(), nearest.y() - entry.robot().y())) {
+                nearest = st;
+            }
+        }
+        return new WorldSpec(world.name(), world.timeStepMs(), world.maxSimTimeS(), world.seed(), world.arena(), entry.robot(),
+                world.obstacles(), entry.checkpoints(), world.checkpointRadiusM(), nearest, world.battery());
     }
 
     /**

@@ -88,6 +88,10 @@ public final class WorldGenerator {
     private static final Pattern GENERATED_NAME = Pattern.compile("([a-z]+)-\\d{3,}");
     private static final double ARENA_M = 5.0;
     private static final int MAX_DRAWS = 500;
+    /** The most robots a world is drawn with. */
+    public static final int MAX_ROBOTS = FleetPlacement.MAX_ROBOTS;
+    /** Seconds added to a fleet's time limit for each robot beyond the first: waiting for another at a door or station. */
+    private static final double FLEET_WAIT_S = 30.0;
 
     private final Kind kind;
     private final double robotRadiusM;
@@ -127,6 +131,22 @@ public final class WorldGenerator {
      * @throws IllegalStateException when no draw is solvable (not expected for the built-in kinds)
      */
     public WorldSpec world(long seed, int number) {
+        return world(seed, number, 1);
+    }
+
+    /**
+     * @param seed   the sweep's seed
+     * @param number the world's number, from 1
+     * @param robots how many robots, 1 to {@value #MAX_ROBOTS}: one draws the one-robot world as ever; more are
+     *               placed by {@link FleetPlacement} in the same draw, each robot's mission checked solvable on
+     *               its own (with the station nearest its start)
+     * @return a valid, solvable world named {@code <kind>-<number>}, its noise seed drawn too
+     * @throws IllegalStateException when no draw is solvable (not expected for the built-in kinds)
+     */
+    public WorldSpec world(long seed, int number, int robots) {
+        if (robots < 1 || robots > MAX_ROBOTS) {
+            throw new IllegalArgumentException("robots must be from 1 to " + MAX_ROBOTS + ": " + robots);
+        }
         SplittableRandom random = new SplittableRandom(seed * 1_000_003L + number * 7_919L + kind.ordinal());
         String name = String.format(Locale.ROOT, NAME_FORMAT, kind.label(), number);
         for (int draw = 0; draw < MAX_DRAWS; draw++) {
@@ -137,17 +157,63 @@ public final class WorldGenerator {
             } catch (WorldValidationException e) {
                 continue;
             }
+            if (robots > 1) {
+                WorldSpec fleet = fleet(valid, robots, random);
+                if (fleet != null) {
+                    return fleet;
+                }
+                continue;
+            }
             Solvability plan = Solvability.of(valid);
             if (!plan.solvable() || (kind == Kind.BATTERY && plan.recharges() == 0)) {
                 continue;
             }
-            // time for the tour at a third of top speed (a fifth for corridors), the charging, and a margin
-            double chargeS = plan.recharges() * valid.battery().rechargeTo() / valid.battery().rechargeRatePerS();
-            double limit = Math.ceil((plan.lengthM() / (valid.robot().maxSpeedMps() / kind.slowdown) + chargeS + 60) / 10) * 10;
-            return new WorldSpec(name, valid.timeStepMs(), limit, valid.seed(), valid.arena(), valid.robot(),
+            return new WorldSpec(name, valid.timeStepMs(), timeLimitS(valid, plan), valid.seed(), valid.arena(), valid.robot(),
                     valid.obstacles(), valid.checkpoints(), valid.checkpointRadiusM(), valid.rechargeStation(), valid.battery());
         }
-        throw new IllegalStateException("no solvable " + kind.label() + " world in " + MAX_DRAWS + " draws");
+        throw new IllegalStateException("no solvable " + kind.label() + " world"
+                + (robots > 1 ? " with " + robots + " robots" : "") + " in " + MAX_DRAWS + " draws");
+    }
+
+    /** Time for the tour at a third of top speed (a fifth for corridors), the charging, and a margin, seconds. */
+    private double timeLimitS(WorldSpec mission, Solvability plan) {
+        double chargeS = plan.recharges() * mission.battery().rechargeTo() / mission.battery().rechargeRatePerS();
+        return Math.ceil((plan.lengthM() / (mission.robot().maxSpeedMps() / kind.slowdown) + chargeS + 60) / 10) * 10;
+    }
+
+    /**
+     * @return the drawn world with N robots placed, valid and every mission solvable, its time limit the longest
+     *         mission's and {@value #FLEET_WAIT_S} s for each other robot (waiting at doors and stations); null
+     *         when this draw does not give one
+     */
+    private WorldSpec fleet(WorldSpec valid, int robots, SplittableRandom random) {
+        GridPlanner planner = new GridPlanner(valid, Solvability.CLEARANCE_M);
+        Solvability first = Solvability.of(valid, planner);
+        if (!first.solvable() || (kind == Kind.BATTERY && first.recharges() == 0)) {
+            return null;
+        }
+        WorldSpec placed = new FleetPlacement(valid, planner, random).place(robots);
+        if (placed == null) {
+            return null;
+        }
+        WorldSpec fleet;
+        try {
+            fleet = WorldFiles.parse(WorldJson.of(placed), valid.name());
+        } catch (WorldValidationException e) {
+            return null;
+        }
+        double limit = 0;
+        for (int i = 0; i < robots; i++) {
+            WorldSpec mission = Solvability.missionOf(fleet, i);
+            Solvability plan = Solvability.of(mission, planner); // every robot has robot 1's body: one grid serves all
+            if (!plan.solvable()) {
+                return null;
+            }
+            limit = Math.max(limit, timeLimitS(mission, plan));
+        }
+        return WorldSpec.fleet(fleet.name(), fleet.timeStepMs(), limit + FLEET_WAIT_S * (robots - 1), fleet.seed(),
+                fleet.arena(), fleet.robots(), fleet.obstacles(), fleet.checkpointRadiusM(), fleet.rechargeStations(),
+                fleet.battery());
     }
 
     /**

@@ -36,20 +36,22 @@ public final class WorldJson {
             arena.addProperty("y", a.y());
         }
         root.add("arena", arena);
-        WorldSpec.Robot r = world.robot();
-        JsonObject robot = new JsonObject();
-        robot.addProperty("x", r.x());
-        robot.addProperty("y", r.y());
-        robot.addProperty("headingDeg", r.headingDeg());
-        robot.addProperty("radiusM", r.radiusM());
-        robot.addProperty("maxSpeedMps", r.maxSpeedMps());
-        robot.addProperty("sensorRangeM", r.sensorRangeM());
-        if (!r.sensorAnglesDeg().equals(WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG)) { // a default world's file stays as it was
-            JsonArray angles = new JsonArray();
-            r.sensorAnglesDeg().forEach(angles::add);
-            robot.add("sensorAnglesDeg", angles);
+        boolean fleet = isFleet(world);
+        if (fleet) {
+            JsonArray robots = new JsonArray();
+            for (WorldSpec.RobotEntry e : world.robots()) {
+                JsonObject robot = new JsonObject();
+                robot.addProperty("id", e.id());
+                robotProperties(robot, e.robot());
+                robot.add("checkpoints", checkpoints(e.checkpoints()));
+                robots.add(robot);
+            }
+            root.add("robots", robots);
+        } else {
+            JsonObject robot = new JsonObject();
+            robotProperties(robot, world.robot());
+            root.add("robot", robot);
         }
-        root.add("robot", robot);
         JsonArray obstacles = new JsonArray();
         for (WorldSpec.Obstacle o : world.obstacles()) {
             JsonObject ob = new JsonObject();
@@ -66,20 +68,17 @@ public final class WorldJson {
             obstacles.add(ob);
         }
         root.add("obstacles", obstacles);
-        JsonArray checkpoints = new JsonArray();
-        for (WorldSpec.Checkpoint c : world.checkpoints()) {
-            JsonObject cp = new JsonObject();
-            cp.addProperty("x", c.x());
-            cp.addProperty("y", c.y());
-            checkpoints.add(cp);
+        if (!fleet) {
+            root.add("checkpoints", checkpoints(world.checkpoints()));
         }
-        root.add("checkpoints", checkpoints);
         root.addProperty("checkpointRadiusM", world.checkpointRadiusM());
-        JsonObject station = new JsonObject();
-        station.addProperty("x", world.rechargeStation().x());
-        station.addProperty("y", world.rechargeStation().y());
-        station.addProperty("radiusM", world.rechargeStation().radiusM());
-        root.add("rechargeStation", station);
+        if (world.rechargeStations().size() > 1) {
+            JsonArray stations = new JsonArray();
+            world.rechargeStations().forEach(st -> stations.add(station(st)));
+            root.add("rechargeStations", stations);
+        } else {
+            root.add("rechargeStation", station(world.rechargeStation()));
+        }
         WorldSpec.Battery b = world.battery();
         JsonObject battery = new JsonObject();
         battery.addProperty("initial", b.initial());
@@ -91,12 +90,55 @@ public final class WorldJson {
     }
 
     /**
+     * @return whether the world is written with {@code robots}: several robots, or one whose id is not the
+     *         one-robot file's (a one-robot world is written as it always was)
+     */
+    private static boolean isFleet(WorldSpec world) {
+        return world.hasSeveralRobots() || world.robots().get(0).id() != WorldSpec.SINGLE_ROBOT_ID;
+    }
+
+    /** Writes a robot's pose and properties into an object ({@code robot}, or a {@code robots} entry after its id). */
+    private static void robotProperties(JsonObject robot, WorldSpec.Robot r) {
+        robot.addProperty("x", r.x());
+        robot.addProperty("y", r.y());
+        robot.addProperty("headingDeg", r.headingDeg());
+        robot.addProperty("radiusM", r.radiusM());
+        robot.addProperty("maxSpeedMps", r.maxSpeedMps());
+        robot.addProperty("sensorRangeM", r.sensorRangeM());
+        if (!r.sensorAnglesDeg().equals(WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG)) { // a default world's file stays as it was
+            JsonArray angles = new JsonArray();
+            r.sensorAnglesDeg().forEach(angles::add);
+            robot.add("sensorAnglesDeg", angles);
+        }
+    }
+
+    private static JsonArray checkpoints(java.util.List<WorldSpec.Checkpoint> list) {
+        JsonArray checkpoints = new JsonArray();
+        for (WorldSpec.Checkpoint c : list) {
+            JsonObject cp = new JsonObject();
+            cp.addProperty("x", c.x());
+            cp.addProperty("y", c.y());
+            checkpoints.add(cp);
+        }
+        return checkpoints;
+    }
+
+    private static JsonObject station(WorldSpec.RechargeStation st) {
+        JsonObject station = new JsonObject();
+        station.addProperty("x", st.x());
+        station.addProperty("y", st.y());
+        station.addProperty("radiusM", st.radiusM());
+        return station;
+    }
+
+    /**
      * @param world a world
      * @param seed  another seed
      * @return the same world drawing its noise from that seed
      */
     public static WorldSpec withSeed(WorldSpec world, long seed) {
         return new WorldSpec(world.name(), world.timeStepMs(), world.maxSimTimeS(), seed, world.arena(), world.robot(),
-                world.obstacles(), world.checkpoints(), world.checkpointRadiusM(), world.rechargeStation(), world.battery());
+                world.obstacles(), world.checkpoints(), world.checkpointRadiusM(), world.rechargeStation(), world.battery(),
+                world.robots(), world.rechargeStations());
     }
 }
