@@ -33,7 +33,8 @@ final class FleetLane {
     final Map<String, Long> commandWins = new TreeMap<>();
     final List<SvgRenderer.TrajectoryPoint> path = new ArrayList<>();
     final List<SvgRenderer.Marker> markers = new ArrayList<>();
-    final ReplayData replay;
+    /** Its steps for replay.html, made once its engine's CommandArray slots are known. */
+    ReplayData replay;
     RobotEngine engine;
     ProactiveController controller;
     StepTracer tracer;
@@ -54,7 +55,6 @@ final class FleetLane {
     FleetLane(int index, int robotId, Simulation sim) {
         this.index = index;
         this.robotId = robotId;
-        this.replay = new ReplayData(Map.of(), sim.robot(index).distanceSensors().size());
         this.recharges = sim.groundTruth(index).recharges();
         GroundTruth t = sim.groundTruth(index);
         path.add(new SvgRenderer.TrajectoryPoint(t.x(), t.y(), category()));

@@ -19,6 +19,7 @@ import java.util.function.UnaryOperator;
 import org.proactiverobotics.app.foxglove.McapRecorder;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
+import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.ReplayPage;
 import org.proactiverobotics.app.replay.ReplayRobot;
 import org.proactiverobotics.app.replay.SeenReadings;
@@ -150,7 +151,8 @@ final class FleetMission {
         try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"));
              McapRecorder.Fleet recorder = mcap ? McapRecorder.openFleet(outDir.resolve(McapRecorder.FILE_NAME),
                      options.world()) : null) {
-            for (FleetLane lane : lanes) {
+            for (FleetLane lane : lanes) { // the replay's suggestion columns are the engine's slots, as in a one-robot run
+                lane.replay = new ReplayData(lane.engine.slots(), sim.robot(lane.index).distanceSensors().size());
                 lane.tracer = new StepTracer(sim, lane.index, lane.robotId, traceWriter, lane.replay, lane.belief,
                         recorder == null ? null : recorder.robot(lane.index));
                 lane.tracer.seen(lane.seen);
