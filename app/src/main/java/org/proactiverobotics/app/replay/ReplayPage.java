@@ -75,8 +75,30 @@ public final class ReplayPage {
     public static void writeFleet(Path file, Source source, WorldSpec world, Map<String, String> colours,
                                   List<ReplayRobot> robots, String summary) throws IOException {
         JsonObject data = header(source, world, colours, summary, null);
-        data.add("robots", ReplayRobot.toJson(robots, 0));
+        fleet(data, world, robots);
         Files.writeString(file, html(data));
+    }
+
+    /**
+     * Makes a page's data that of a world with several robots: every robot, and every station of the world.
+     *
+     * @param data   the page's data ({@link #header})
+     * @param world  the world, or null
+     * @param robots every robot with its steps so far
+     */
+    public static void fleet(JsonObject data, WorldSpec world, List<ReplayRobot> robots) {
+        data.add("robots", ReplayRobot.toJson(robots, 0));
+        if (world != null && data.get("world").isJsonObject()) {
+            JsonArray stations = new JsonArray();
+            for (WorldSpec.RechargeStation s : world.rechargeStations()) {
+                JsonObject st = new JsonObject();
+                st.addProperty("x", s.x());
+                st.addProperty("y", s.y());
+                st.addProperty("radiusM", s.radiusM());
+                stations.add(st);
+            }
+            data.getAsJsonObject("world").add("stations", stations);
+        }
     }
 
     /**

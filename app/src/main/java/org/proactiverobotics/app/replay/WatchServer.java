@@ -113,7 +113,7 @@ public final class WatchServer implements AutoCloseable {
                 robots.add(new ReplayRobot(entry.id(), null, "robot " + entry.id() + " of " + fleet.size()
                         + ", live from the database", entry, fleet.get(i).data()));
             }
-            data.add("robots", ReplayRobot.toJson(robots, 0));
+            ReplayPage.fleet(data, world, robots);
         }
         send(ex, 200, "text/html; charset=utf-8", ReplayPage.html(data));
     }
