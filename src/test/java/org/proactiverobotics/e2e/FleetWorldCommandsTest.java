@@ -2,6 +2,7 @@ package org.proactiverobotics.e2e;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import com.google.gson.JsonParser;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -63,6 +64,16 @@ class FleetWorldCommandsTest extends CommandLineTest {
         // fleet-corridor's corridor is 0.6 m wide: its two 0.3 m robots cannot pass each other inside it
         WorldSpec corridor = WorldFiles.load(fleetExamples().resolve("fleet-corridor.json"));
         assertThat(corridor.robots()).allMatch(r -> r.robot().radiusM() * 4 >= 0.6);
+    }
+
+    @Test
+    void theManualsFleetExampleIsTheExampleFile() throws Exception {
+        String manual = Files.readString(fleetExamples().resolve("../../docs/world-file.md").normalize());
+        int at = manual.indexOf("```json\n{\n  \"name\": \"fleet-corridor\"");
+        assertThat(at).as("docs/world-file.md shows fleet-corridor.json").isPositive();
+        String block = manual.substring(at + 8, manual.indexOf("```", at + 8));
+        assertThat(JsonParser.parseString(block))
+                .isEqualTo(JsonParser.parseString(Files.readString(fleetExamples().resolve("fleet-corridor.json"))));
     }
 
     /** A bad fleet, the key path of its one problem. */

@@ -47,7 +47,8 @@ public final class ValidateCommand implements Callable<Integer> {
 
     /**
      * @return e.g. {@code reference-arena: valid (3 obstacles, 4 checkpoints, arena radius 5.0 m)}, or for a
-     *         rectangle {@code ... arena 56.0 x 60.0 m centred on (12.0, -3.5))}
+     *         rectangle {@code ... arena 56.0 x 60.0 m centred on (12.0, -3.5))}; for several robots or stations
+     *         {@code fleet-corridor: valid (2 robots, 2 obstacles, 2 checkpoints, 2 recharge stations, arena ...)}
      */
     static String summary(WorldSpec w) {
         WorldSpec.Arena a = w.arena();

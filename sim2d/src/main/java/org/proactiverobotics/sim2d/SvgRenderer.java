@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
+import java.util.TreeMap;
 
 /**
  * Draws a world to SVG: arena, obstacles, numbered checkpoints, the recharge station, the start pose, a 1 m
@@ -78,9 +79,9 @@ public final class SvgRenderer {
     private final java.util.Set<Integer> pathStarts = new java.util.HashSet<>();
     private final List<Marker> markers = new ArrayList<>();
     /** Each robot's path in a world of several, by its index in {@link WorldSpec#robots()}. */
-    private final Map<Integer, List<TrajectoryPoint>> robotPaths = new java.util.TreeMap<>();
+    private final Map<Integer, List<TrajectoryPoint>> robotPaths = new TreeMap<>();
     /** Each robot's body in a world of several, by its index. */
-    private final Map<Integer, RobotPose> robotPoses = new java.util.TreeMap<>();
+    private final Map<Integer, RobotPose> robotPoses = new TreeMap<>();
     private RobotPose robot;
     private String title;
 

@@ -7,6 +7,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -587,7 +588,7 @@ final class WorldParser {
             return null;
         }
         List<WorldSpec.RobotEntry> result = new ArrayList<>();
-        Map<Integer, Integer> indexOfId = new java.util.HashMap<>();
+        Map<Integer, Integer> indexOfId = new HashMap<>();
         for (int i = 0; i < array.size(); i++) {
             String path = "robots[" + i + "]";
             JsonElement element = array.get(i);

@@ -3,6 +3,7 @@ package org.proactiverobotics.app.sweep;
 import com.google.gson.GsonBuilder;
 import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
+import java.util.List;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -112,7 +113,7 @@ public final class WorldJson {
         }
     }
 
-    private static JsonArray checkpoints(java.util.List<WorldSpec.Checkpoint> list) {
+    private static JsonArray checkpoints(List<WorldSpec.Checkpoint> list) {
         JsonArray checkpoints = new JsonArray();
         for (WorldSpec.Checkpoint c : list) {
             JsonObject cp = new JsonObject();
