@@ -24,7 +24,7 @@ import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.NoiseLevel;
 
 /**
- * replay.html of a world with several robots (DESIGN section 16) in a real headless Chromium: {@code
+ * replay.html of a world with several robots (docs/replay.md, "Several robots") in a real headless Chromium: {@code
  * #robot=2&iteration=M} shows robot 2's record as its trace lines have it, every robot is drawn where the trace
  * says it was at that time, the picker switches the record, and {@code #iteration=M} alone shows the first robot.
  */

@@ -19,7 +19,7 @@ import org.proactiverobotics.app.sweep.RobotsCsv;
 import org.proactiverobotics.app.sweep.WorldJson;
 
 /**
- * {@code sweep} with a world of several robots (DESIGN section 16): results.csv keeps a row per run (the run as a
+ * {@code sweep} with a world of several robots (docs/experiments.md): results.csv keeps a row per run (the run as a
  * whole: success only when every robot accomplished, checkpoints and collisions summed), robots.csv gets a row per
  * robot of each run as report.json's {@code robots} has it, summary.html says how the robots did; a sweep of
  * one-robot worlds writes no robots.csv.

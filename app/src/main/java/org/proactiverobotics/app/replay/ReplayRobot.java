@@ -6,7 +6,7 @@ import java.util.List;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
- * One robot of a world with several robots as replay.html and the live view show it (DESIGN section 16): its id,
+ * One robot of a world with several robots as replay.html and the live view show it (docs/replay.md): its id,
  * its own body, rays and checkpoints, a line on how its mission went, and its steps. The page draws every robot
  * and shows the picked one's record ({@code #robot=N&iteration=M}).
  *

@@ -21,7 +21,7 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * steps, which polls {@code /steps?from=K} for the steps from K on, as {@link LiveMission} read
  * them. GET only; nothing it serves writes to the database.
  * <p>
- * A world of several robots (DESIGN section 16) is followed robot by robot, one {@link LiveMission} each: the page
+ * A world of several robots (docs/replay.md, "Several robots") is followed robot by robot, one {@link LiveMission} each: the page
  * draws every robot and shows the picked one's record, and {@code /steps?from=K1,K2,...} answers
  * {@code {"status": ..., "robots": [part, ...]}}, each robot's steps from its K on, in the world's order.
  */
