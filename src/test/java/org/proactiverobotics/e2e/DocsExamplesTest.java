@@ -44,7 +44,9 @@ class DocsExamplesTest extends CommandLineTest {
     /** What the robot process's report leaves out: its database user may read neither table, nor see the engine's belief. */
     private static final Set<String> ENGINE_ONLY_REPORT_KEYS = Set.of("strategy", "ruleFailures", "poseError");
     /** The fields a trace.jsonl line has only when there is something to say (schemaVersion 3). */
-    private static final Set<String> OPTIONAL_TRACE_KEYS = Set.of("belief", "route", "mapDelta", "reason");
+    private static final Set<String> OPTIONAL_TRACE_KEYS = Set.of("belief", "route", "mapDelta", "reason", "robot");
+    /** The keys a report of a world with several robots adds to the one-robot report's. */
+    private static final Set<String> FLEET_REPORT_KEYS = Set.of("robotCollisions", "robots");
 
     private static JsonObject realReport;
     private static JsonObject realTraceLine;
@@ -121,6 +123,9 @@ class DocsExamplesTest extends CommandLineTest {
                 Set<String> expected = new LinkedHashSet<>(realReport.keySet());
                 if (!o.has("strategy")) { // the robot process's report (docs/report.md): the engine's fields left out
                     expected.removeAll(ENGINE_ONLY_REPORT_KEYS);
+                }
+                if (o.has("robots")) { // a world with several robots (docs/report.md)
+                    expected.addAll(FLEET_REPORT_KEYS);
                 }
                 assertThat(o.keySet()).as(e.where() + ": report.json's keys").isEqualTo(expected);
                 assertThat(o.getAsJsonObject("timing").keySet()).as(e.where() + ": report.json's timing keys")
