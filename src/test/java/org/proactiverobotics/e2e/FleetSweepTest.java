@@ -9,6 +9,8 @@ import java.io.IOException;
 import java.io.Reader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import org.apache.commons.csv.CSVFormat;
 import org.apache.commons.csv.CSVParser;
@@ -17,6 +19,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.proactiverobotics.app.sweep.RobotsCsv;
 import org.proactiverobotics.app.sweep.WorldJson;
+import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * {@code sweep} with a world of several robots (docs/experiments.md): results.csv keeps a row per run (the run as a
@@ -75,6 +78,30 @@ class FleetSweepTest extends CommandLineTest {
         String summary = Files.readString(out.resolve("summary.html"));
         assertThat(summary).contains("robots: " + accomplished + " of 6 accomplished their own mission");
         assertThat(this.out.toString()).contains("Robots: " + out.resolve(RobotsCsv.FILE_NAME));
+    }
+
+    @Test
+    void mergingShardsMergesTheirRobotsInTheMissionsOrder() throws Exception {
+        Path worlds = Files.createDirectories(tmp.resolve("worlds"));
+        WorldSpec crossing = FleetMissionTest.crossing(); // its first 5 s: the rows are what matters here
+        Files.writeString(worlds.resolve("crossing.json"), WorldJson.of(WorldSpec.fleet(crossing.name(),
+                crossing.timeStepMs(), 5.0, crossing.seed(), crossing.arena(), crossing.robots(), crossing.obstacles(),
+                crossing.checkpointRadiusM(), crossing.rechargeStations(), crossing.battery())));
+        List<String> shardRows = new ArrayList<>();
+        for (int i = 0; i < 2; i++) {
+            Path shard = tmp.resolve("shard-" + i);
+            assertThat(run("sweep", "--worlds", worlds.toString(), "--noise", "none,small", "--link", "direct",
+                    "--shard", i + "/2", "--out", shard.toString())).as(err.toString()).isIn(0, 1);
+            List<String> lines = Files.readAllLines(shard.resolve(RobotsCsv.FILE_NAME));
+            shardRows.addAll(lines.subList(1, lines.size()));
+        }
+        Path merged = tmp.resolve("merged");
+        assertThat(run("sweep", "merge", tmp.resolve("shard-0").toString(), tmp.resolve("shard-1").toString(), "--out",
+                merged.toString())).as(err.toString()).isIn(0, 1);
+        List<String> lines = Files.readAllLines(merged.resolve(RobotsCsv.FILE_NAME));
+        assertThat(lines.get(0)).isEqualTo(String.join(",", RobotsCsv.COLUMNS));
+        assertThat(lines.subList(1, lines.size())).hasSize(6).containsExactlyInAnyOrderElementsOf(shardRows)
+                .isSortedAccordingTo(Comparator.comparing((String l) -> l.substring(0, 4)));
     }
 
     @Test

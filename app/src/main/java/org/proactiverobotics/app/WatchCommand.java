@@ -11,6 +11,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
 import org.proactiverobotics.app.deploy.DatabaseProblem;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
@@ -137,7 +138,7 @@ public final class WatchCommand implements Callable<Integer> {
             }
             try (server) {
                 String who = missions.size() > 1 ? "robots " + worldSpec.robots().stream().map(r -> String.valueOf(r.id()))
-                        .collect(java.util.stream.Collectors.joining(", ")) : "robot " + robotId;
+                        .collect(Collectors.joining(", ")) : "robot " + robotId;
                 out.printf(Locale.ROOT, "Watching %s: http://%s:%d/ (Ctrl-C stops)%n", who,
                         server.address().getAddress().getHostAddress(), server.address().getPort());
                 out.flush();

@@ -1,5 +1,6 @@
 package org.proactiverobotics.app.foxglove;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.proactiverobotics.sim2d.WorldSpec;
 
@@ -85,7 +86,7 @@ final class Scene {
 
         entity(j, "checkpoints", "world", false);
         j.name("cubes").openArray().closeArray().name("cylinders").openArray();
-        List<Label> labels = new java.util.ArrayList<>();
+        List<Label> labels = new ArrayList<>();
         for (WorldSpec.RobotEntry r : fleet ? world.robots() : world.robots().subList(0, 1)) {
             for (int i = 0; i < r.checkpoints().size(); i++) {
                 WorldSpec.Checkpoint c = r.checkpoints().get(i);
@@ -103,7 +104,7 @@ final class Scene {
             cylinder(j, s.x(), s.y(), 0.005, 2 * s.radiusM(), 0.01, 0.1, 0.7, 0.2, 0.6);
         }
         j.closeArray().name("lines").openArray().closeArray();
-        List<Label> stationLabels = new java.util.ArrayList<>();
+        List<Label> stationLabels = new ArrayList<>();
         for (WorldSpec.RechargeStation s : stations) {
             stationLabels.add(new Label(s.x(), s.y(), "station"));
         }

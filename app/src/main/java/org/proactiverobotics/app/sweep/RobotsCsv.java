@@ -65,6 +65,21 @@ public final class RobotsCsv implements Closeable {
         }
     }
 
+    /**
+     * Appends a row as read from another robots.csv (a shard's, when merging), value for value.
+     *
+     * @param values the row's values, in {@link #COLUMNS}' order
+     * @throws UncheckedIOException when the file cannot be written
+     */
+    public synchronized void appendValues(List<String> values) {
+        try {
+            printer.printRecord(values);
+            printer.flush();
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
     @Override
     public synchronized void close() throws IOException {
         printer.close();
