@@ -26,8 +26,19 @@ import org.proactiverobotics.sim2d.WorldSpec;
  */
 class FleetMissionTest {
 
-    /** Two robots whose missions cross near the arena's centre, a third that goes round alone; short. */
+    /** The time limit of the runs compared, simulated seconds. */
+    private static final double SHORT_S = 6.0;
+
+    /** Two robots whose missions cross near the arena's centre, a third that goes round alone (all done by 17 s). */
     static WorldSpec crossing() {
+        return crossing(40.0);
+    }
+
+    /**
+     * @param timeLimitS the world's maxSimTimeS: 6 s keeps the database runs short (each robot still drives,
+     *                   senses the others and decides every step)
+     */
+    static WorldSpec crossing(double timeLimitS) {
         List<WorldSpec.RobotEntry> robots = List.of(
                 new WorldSpec.RobotEntry(1, new WorldSpec.Robot(-2.5, -1.0, 0.0, 0.12, 0.5, 1.0),
                         List.of(new WorldSpec.Checkpoint(2.5, -0.5))),
@@ -35,7 +46,7 @@ class FleetMissionTest {
                         List.of(new WorldSpec.Checkpoint(-2.5, -0.5))),
                 new WorldSpec.RobotEntry(5, new WorldSpec.Robot(0.0, 3.0, 0.0, 0.10, 0.4, 1.0),
                         List.of(new WorldSpec.Checkpoint(2.0, 2.0), new WorldSpec.Checkpoint(-2.0, 2.5))));
-        return WorldSpec.fleet("crossing", 32, 40.0, 11, new WorldSpec.Arena(4.0), robots,
+        return WorldSpec.fleet("crossing", 32, timeLimitS, 11, new WorldSpec.Arena(4.0), robots,
                 List.of(WorldSpec.Obstacle.box(0.0, 1.0, 0.6, 0.6, 0.0)), 0.25,
                 List.of(new WorldSpec.RechargeStation(-3.0, 2.0, 0.35)), WorldSpec.Battery.DEFAULT);
     }
@@ -53,7 +64,7 @@ class FleetMissionTest {
 
     private static Missions.Run onDatabase(DatabaseKind kind) throws Exception {
         try (TestDatabase db = TestDatabases.open(kind)) {
-            return run(new MissionOptions(crossing(), db.jdbcUrl(), db.user(), db.password(), "safety-first", 1)
+            return run(new MissionOptions(crossing(SHORT_S), db.jdbcUrl(), db.user(), db.password(), "safety-first", 1)
                     .withNoise(NoiseLevel.SMALL), 2);
         }
     }
@@ -103,16 +114,18 @@ class FleetMissionTest {
 
     @Test
     void oneOrTwoEngineThreadsGiveTheSameRunBitForBit() throws Exception {
-        Missions.Run one = run(direct(crossing()), 1);
-        Missions.Run two = run(direct(crossing()), 2);
+        Missions.Run one = run(direct(crossing(SHORT_S)), 1);
+        Missions.Run two = run(direct(crossing(SHORT_S)), 2);
         assertThat(trace(two)).isEqualTo(trace(one));
         assertThat(deterministic(two.report())).isEqualTo(deterministic(one.report()));
     }
 
     @Test
     void theDirectLinkAndH2GiveTheSameRun() throws Exception {
-        Missions.Run direct = run(direct(crossing()), 1);
+        Missions.Run direct = run(direct(crossing(SHORT_S)), 1);
         Missions.Run h2 = onDatabase(DatabaseKind.H2);
+        assertThat(h2.report().outcome()).isEqualTo(Outcome.TIME_LIMIT);
+        assertThat(h2.report().robots()).allSatisfy(r -> assertThat(r.distanceM()).isGreaterThan(1.0));
         assertThat(h2.report().database()).isEqualTo("h2");
         assertThat(trace(h2)).isEqualTo(trace(direct));
         assertThat(deterministic(h2.report())).isEqualTo(deterministic(direct.report()));
@@ -121,7 +134,7 @@ class FleetMissionTest {
     @Test
     void mariaDbGivesTheSameRunAsTheDirectLink() throws Exception {
         Missions.Run onMariaDb = onDatabase(DatabaseKind.MARIADB); // skipped without PROACTIVE_TEST_MARIADB_URL
-        Missions.Run direct = run(direct(crossing()), 1);
+        Missions.Run direct = run(direct(crossing(SHORT_S)), 1);
         assertThat(trace(onMariaDb)).isEqualTo(trace(direct));
         assertThat(deterministic(onMariaDb.report())).isEqualTo(deterministic(direct.report()));
     }
