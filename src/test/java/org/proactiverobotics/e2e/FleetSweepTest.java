@@ -19,7 +19,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.proactiverobotics.app.sweep.RobotsCsv;
 import org.proactiverobotics.app.sweep.WorldJson;
-import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * {@code sweep} with a world of several robots (docs/experiments.md): results.csv keeps a row per run (the run as a
@@ -83,10 +82,8 @@ class FleetSweepTest extends CommandLineTest {
     @Test
     void mergingShardsMergesTheirRobotsInTheMissionsOrder() throws Exception {
         Path worlds = Files.createDirectories(tmp.resolve("worlds"));
-        WorldSpec crossing = FleetMissionTest.crossing(); // its first 5 s: the rows are what matters here
-        Files.writeString(worlds.resolve("crossing.json"), WorldJson.of(WorldSpec.fleet(crossing.name(),
-                crossing.timeStepMs(), 5.0, crossing.seed(), crossing.arena(), crossing.robots(), crossing.obstacles(),
-                crossing.checkpointRadiusM(), crossing.rechargeStations(), crossing.battery())));
+        // its first 5 s: the rows are what matters here
+        Files.writeString(worlds.resolve("crossing.json"), WorldJson.of(FleetMissionTest.crossing(5.0)));
         List<String> shardRows = new ArrayList<>();
         for (int i = 0; i < 2; i++) {
             Path shard = tmp.resolve("shard-" + i);

@@ -55,10 +55,7 @@ class FleetWatchTest extends CommandLineTest {
 
     @Test
     void everyRobotIsServedFromItsOwnRowsAndTheOneRobotPageHasNoPicker() throws Exception {
-        WorldSpec crossing = FleetMissionTest.crossing(); // its first 6 s: enough rows for each robot, and quick
-        WorldSpec world = WorldSpec.fleet(crossing.name(), crossing.timeStepMs(), 6.0, crossing.seed(), crossing.arena(),
-                crossing.robots(), crossing.obstacles(), crossing.checkpointRadiusM(), crossing.rechargeStations(),
-                crossing.battery());
+        WorldSpec world = FleetMissionTest.crossing(6.0); // its first 6 s: enough rows for each robot, and quick
         Path file = tmp.resolve("crossing.json");
         Files.writeString(file, WorldJson.of(world));
         String url = "jdbc:h2:file:" + tmp.resolve("db").resolve("p") + ";MODE=MySQL;DATABASE_TO_LOWER=TRUE";
