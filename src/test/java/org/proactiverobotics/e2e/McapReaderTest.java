@@ -17,6 +17,7 @@ import java.util.TreeSet;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.function.UnaryOperator;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Assumptions;
@@ -24,6 +25,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.proactiverobotics.app.mission.Mission;
+import org.proactiverobotics.app.mission.MissionOptions;
+import org.proactiverobotics.app.mission.NoiseLevel;
 import org.proactiverobotics.mcap.McapCheck;
 import org.proactiverobotics.sim2d.WorldFiles;
 
@@ -58,6 +62,23 @@ class McapReaderTest extends CommandLineTest {
         assertThat(read).contains("/world 1, /tf ").endsWith(" 0 failed");
         assertThat(read.lines().filter(l -> l.startsWith("FAILED"))).isEmpty();
         System.out.println(world + ": " + read.lines().filter(l -> l.startsWith("mcap-reader:")).findFirst().orElse(""));
+    }
+
+    @Test
+    void aWorldOfSeveralRobotsGivesEachRobotItsTopicsAndFrameAsItsTraceLinesSayThem() throws Exception {
+        assumeNodeInstalled();
+        Path dir = Files.createDirectories(tmp.resolve("fleet"));
+        MissionOptions options = new MissionOptions(FleetMissionTest.crossing(), null, null, null, "safety-first", 1)
+                .withLink(MissionOptions.Link.DIRECT).withNoise(NoiseLevel.SMALL);
+        new Mission(options).mcap(true).engineTables(UnaryOperator.identity()).run(dir);
+
+        String read = referenceReader(dir, "check-fleet.mjs");
+
+        assertThat(read.lines().filter(l -> l.startsWith("FAILED"))).isEmpty();
+        assertThat(read).contains("mcap-reader: 3 robots, 25 channels, ").endsWith(" 0 failed");
+        Set<String> topics = McapCheck.check(dir.resolve("run.mcap")).channels().stream()
+                .map(McapCheck.ChannelCount::topic).collect(Collectors.toSet());
+        assertThat(topics).contains("/world", "/robot/1/tf", "/robot/2/scan", "/robot/5/decision").doesNotContain("/tf");
     }
 
     @Test
@@ -208,12 +229,17 @@ class McapReaderTest extends CommandLineTest {
 
     /** Runs the reference reader's check on a run's folder; installs its pinned packages first if missing. */
     static String referenceReader(Path runDir) throws IOException, InterruptedException {
+        return referenceReader(runDir, "check-run.mjs");
+    }
+
+    /** Runs one of the reference reader's checks ({@code check-run.mjs}, {@code check-fleet.mjs}) on a run's folder. */
+    static String referenceReader(Path runDir, String script) throws IOException, InterruptedException {
         Path reader = Deployment.root().resolve("src/test/mcap-reader");
         if (!Files.isDirectory(reader.resolve("node_modules"))) {
             String installed = exec(reader, List.of("npm", "ci", "--no-audit", "--no-fund"));
             assertThat(reader.resolve("node_modules")).as("npm ci: " + installed).isDirectory();
         }
-        return exec(reader, List.of("node", "check-run.mjs", runDir.toAbsolutePath().toString())).strip();
+        return exec(reader, List.of("node", script, runDir.toAbsolutePath().toString())).strip();
     }
 
     private static synchronized String exec(Path dir, List<String> command) throws IOException, InterruptedException {

@@ -140,12 +140,6 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
-        if (mcap && spec.hasSeveralRobots()) {
-            err.println("--mcap does not take a world with several robots yet (" + spec.name() + " has "
-                    + spec.robots().size() + "): drop --mcap");
-            err.flush();
-            return Main.EXIT_BAD_INPUT;
-        }
         if (waitS < 0) {
             err.println("--wait-s must be >= 0: " + waitS);
             err.flush();

@@ -21,9 +21,11 @@ import java.util.stream.Stream;
 import org.proactiverobotics.app.deploy.OutputDirectory;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.NoiseLevel;
+import org.proactiverobotics.app.mission.RobotReport;
 import org.proactiverobotics.app.sweep.MissionResult;
 import org.proactiverobotics.app.sweep.MissionRunner;
 import org.proactiverobotics.app.sweep.ResultsCsv;
+import org.proactiverobotics.app.sweep.RobotsCsv;
 import org.proactiverobotics.app.sweep.Shard;
 import org.proactiverobotics.app.sweep.SummaryHtml;
 import org.proactiverobotics.app.sweep.Sweep;
@@ -186,8 +188,12 @@ public final class SweepCommand implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(onCtrlC);
         long startNs = System.nanoTime();
         List<MissionResult> results;
+        // worlds with several robots: a row per robot in robots.csv; a sweep of one-robot worlds writes none
+        boolean fleets = missions.stream().anyMatch(m -> m.world().hasSeveralRobots());
         try (ResultsCsv csv = new ResultsCsv(outDir.resolve("results.csv"));
+             RobotsCsv robotsCsv = fleets ? new RobotsCsv(outDir.resolve(RobotsCsv.FILE_NAME)) : null;
              SweepProgress progress = SweepProgress.start(missions.size(), System.console() != null, err)) {
+            sweep.robots(robotsCsv);
             MissionRunner runner = new MissionRunner(plan.link(), plan.plugins(), RunCommand::writeReport, sweep::isStopped)
                     .mcap(mcap);
             results = sweep.run(runner, csv, progress);
@@ -205,11 +211,23 @@ public final class SweepCommand implements Callable<Integer> {
                 results.size() < missions.size() ? " (stopped after " + results.size() + " of " + missions.size() + ")" : "",
                 wallS, jobsUsed, plan.link() == MissionOptions.Link.DIRECT ? "direct link" : "embedded H2",
                 results.size() / Math.max(wallS, 1e-9) * 60);
+        if (fleets) { // a mission counts as accomplished only when all its robots are: say how the robots did
+            long robots = results.stream().mapToLong(r -> Math.max(1, r.robots().size())).sum();
+            long robotsDone = results.stream().mapToLong(r -> r.robots().isEmpty() ? (r.success() ? 1 : 0)
+                    : r.robots().stream().filter(RobotReport::success).count()).sum();
+            long robotCollisions = results.stream().flatMap(r -> r.robots().stream())
+                    .mapToLong(RobotReport::robotCollisions).sum();
+            lead += String.format(Locale.ROOT, "; robots: %d of %d accomplished their own mission, %s between"
+                    + " robots (robots.csv)", robotsDone, robots, Plural.of(robotCollisions, "collision"));
+        }
         int code;
         try {
             SummaryHtml.write(results, lead, outDir);
             stdout.println("Sweep: " + lead);
             stdout.println("Results: " + outDir.resolve("results.csv"));
+            if (fleets) {
+                stdout.println("Robots: " + outDir.resolve(RobotsCsv.FILE_NAME));
+            }
             stdout.println("Summary: " + outDir.resolve("summary.html"));
             code = accomplished == missions.size() ? 0 : Main.EXIT_MISSION_FAILED;
         } catch (IOException e) {

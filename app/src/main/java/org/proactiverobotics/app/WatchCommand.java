@@ -7,8 +7,11 @@ import java.net.BindException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.UnknownHostException;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
 import org.proactiverobotics.app.deploy.DatabaseProblem;
 import org.proactiverobotics.app.deploy.DatabaseWait;
 import org.proactiverobotics.app.deploy.DbOptions;
@@ -110,10 +113,18 @@ public final class WatchCommand implements Callable<Integer> {
             return Main.EXIT_INFRASTRUCTURE;
         }
         try (HikariDataSource pool = Databases.pool(db.url(), db.user(), db.password())) {
-            LiveMission mission = new LiveMission(pool, robotId);
+            // a world of several robots: every robot followed, the page draws them all
+            List<LiveMission> missions = new ArrayList<>();
+            if (worldSpec != null && worldSpec.hasSeveralRobots()) {
+                worldSpec.robots().forEach(r -> missions.add(new LiveMission(pool, r.id())));
+            } else {
+                missions.add(new LiveMission(pool, robotId));
+            }
+            LiveMission mission = missions.get(0);
             WatchServer server;
             try {
-                server = new WatchServer(address, mission, worldSpec, robotId);
+                server = missions.size() > 1 ? new WatchServer(address, worldSpec, missions)
+                        : new WatchServer(address, mission, worldSpec, robotId);
             } catch (BindException e) {
                 err.println("cannot listen on " + address.getAddress().getHostAddress() + " port " + address.getPort()
                         + ": " + e.getMessage() + " (the port is in use, or the address is not this machine's; choose"
@@ -126,18 +137,22 @@ public final class WatchCommand implements Callable<Integer> {
                 return Main.EXIT_INFRASTRUCTURE;
             }
             try (server) {
-                out.printf(Locale.ROOT, "Watching robot %d: http://%s:%d/ (Ctrl-C stops)%n", robotId,
+                String who = missions.size() > 1 ? "robots " + worldSpec.robots().stream().map(r -> String.valueOf(r.id()))
+                        .collect(Collectors.joining(", ")) : "robot " + robotId;
+                out.printf(Locale.ROOT, "Watching %s: http://%s:%d/ (Ctrl-C stops)%n", who,
                         server.address().getAddress().getHostAddress(), server.address().getPort());
                 out.flush();
                 boolean failing = false;
                 while (!signal.stopRequested()) {
                     try {
-                        mission.poll();
+                        for (LiveMission m : missions) {
+                            m.poll();
+                        }
                         if (failing) {
                             LOG.info("watch: the database answers again");
                             failing = false;
                         }
-                        server.status(mission.data().size() == 0 ? "waiting for the mission" : "");
+                        server.status(missions.stream().allMatch(m -> m.data().size() == 0) ? "waiting for the mission" : "");
                     } catch (java.sql.SQLException | RuntimeException e) {
                         String why = DatabaseProblem.of(e, db.url(), "watch").message();
                         if (!failing) {

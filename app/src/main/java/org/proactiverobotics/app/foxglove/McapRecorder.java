@@ -6,6 +6,8 @@ import java.io.InputStream;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import org.proactiverobotics.app.replay.TraceEvent;
@@ -21,6 +23,10 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * event or reason, and /map (the engine's occupancy map) when it changed, at most once per
  * simulated second. The same steps give the same bytes. A write error does not stop the mission:
  * the first one is reported by {@link #close()}.
+ * <p>
+ * A world of several robots ({@link #openFleet}) gets one file with one /world and, per robot, the same topics
+ * under {@code /robot/ID} ({@code /robot/2/tf}, {@code /robot/2/scan}, ...) and its body in the frame
+ * {@code robot_ID/base_link}; each robot's recorder writes its own steps.
  */
 public final class McapRecorder implements AutoCloseable {
 
@@ -32,6 +38,10 @@ public final class McapRecorder implements AutoCloseable {
     static final long MAP_PERIOD_MS = 1000;
 
     private final McapWriter writer;
+    /** Whether closing this recorder ends the file (one robot), or only its robot's part (a fleet's). */
+    private final boolean ownsFile;
+    /** The robot's body frame: {@code base_link}, or {@code robot_ID/base_link} in a fleet. */
+    private final String baseLink;
     private final JsonText j = new JsonText();
     private final ScanLayout scan;
     private final double bodyM;
@@ -49,24 +59,99 @@ public final class McapRecorder implements AutoCloseable {
     private boolean mapPending;
     private long lastMapMs = Long.MIN_VALUE;
     private long lastStepMs;
-    private final Map<String, Integer> schemas = new TreeMap<>();
+    private final Map<String, Integer> schemas;
     private IOException failure;
 
     private McapRecorder(McapWriter writer, WorldSpec world) throws IOException {
+        this(writer, new TreeMap<>(), world.robot(), "", "base_link", true, world);
+    }
+
+    /**
+     * @param schemas  the file's schemas by name (shared by a fleet's recorders)
+     * @param robot    the robot recorded
+     * @param prefix   its topics' prefix ("" or {@code /robot/ID})
+     * @param baseLink its body's frame
+     * @param ownsFile whether closing it ends the file
+     * @param world    the world to write on /world first, or null (a fleet's file has written it)
+     */
+    private McapRecorder(McapWriter writer, Map<String, Integer> schemas, WorldSpec.Robot robot, String prefix,
+                         String baseLink, boolean ownsFile, WorldSpec world) throws IOException {
         this.writer = writer;
-        this.scan = ScanLayout.of(world.robot().sensorAnglesDeg());
-        this.bodyM = world.robot().radiusM();
-        int sceneChannel = channel("/world", "foxglove.SceneUpdate");
-        this.tf = channel("/tf", "foxglove.FrameTransform");
-        this.pose = channel("/pose", "foxglove.PoseInFrame");
-        this.poseEstimate = channel("/pose_estimate", "foxglove.PoseInFrame");
-        this.scanChannel = channel("/scan", "foxglove.LaserScan");
-        this.mapChannel = channel("/map", "foxglove.Grid");
-        this.decision = channel("/decision", "proactive.Decision");
-        this.battery = channel("/battery", "proactive.Battery");
-        this.events = channel("/events", "foxglove.Log");
-        Scene.write(j, world);
-        emit(sceneChannel, 0);
+        this.schemas = schemas;
+        this.ownsFile = ownsFile;
+        this.baseLink = baseLink;
+        this.scan = ScanLayout.of(robot.sensorAnglesDeg());
+        this.bodyM = robot.radiusM();
+        int sceneChannel = world == null ? -1 : channel("/world", "foxglove.SceneUpdate");
+        this.tf = channel(prefix + "/tf", "foxglove.FrameTransform");
+        this.pose = channel(prefix + "/pose", "foxglove.PoseInFrame");
+        this.poseEstimate = channel(prefix + "/pose_estimate", "foxglove.PoseInFrame");
+        this.scanChannel = channel(prefix + "/scan", "foxglove.LaserScan");
+        this.mapChannel = channel(prefix + "/map", "foxglove.Grid");
+        this.decision = channel(prefix + "/decision", "proactive.Decision");
+        this.battery = channel(prefix + "/battery", "proactive.Battery");
+        this.events = channel(prefix + "/events", "foxglove.Log");
+        if (world != null) {
+            Scene.write(j, world);
+            emit(sceneChannel, 0);
+        }
+    }
+
+    /**
+     * run.mcap of a world with several robots: one file, /world with every robot, and a recorder per robot whose
+     * topics are under {@code /robot/ID}.
+     */
+    public static final class Fleet implements AutoCloseable {
+
+        private final McapWriter writer;
+        private final List<McapRecorder> robots = new ArrayList<>();
+
+        private Fleet(McapWriter writer, WorldSpec world) throws IOException {
+            this.writer = writer;
+            Map<String, Integer> schemas = new TreeMap<>();
+            int sceneChannel = writer.channel("/world", schemas.computeIfAbsent("foxglove.SceneUpdate",
+                    n -> writer.schema(n, "jsonschema", schemaBytes(n))), "json", Map.of());
+            for (WorldSpec.RobotEntry r : world.robots()) {
+                robots.add(new McapRecorder(writer, schemas, r.robot(), "/robot/" + r.id(), Scene.baseLink(r.id()),
+                        false, null));
+            }
+            JsonText j = new JsonText();
+            Scene.writeFleet(j, world);
+            writer.message(sceneChannel, 0, j.bytes(), 0, j.length());
+        }
+
+        /**
+         * @param index the robot's position in the world's robots
+         * @return its recorder
+         */
+        public McapRecorder robot(int index) {
+            return robots.get(index);
+        }
+
+        /**
+         * Writes each robot's map still waiting, then the file's end.
+         *
+         * @throws IOException the first write error of any robot, or of the end
+         */
+        @Override
+        public void close() throws IOException {
+            IOException first = null;
+            for (McapRecorder r : robots) {
+                try {
+                    r.close();
+                } catch (IOException e) {
+                    first = first == null ? e : first;
+                }
+            }
+            try {
+                writer.close();
+            } catch (IOException e) {
+                first = first == null ? new IOException("writing " + FILE_NAME + ": " + e.getMessage(), e) : first;
+            }
+            if (first != null) {
+                throw first;
+            }
+        }
     }
 
     /**
@@ -82,6 +167,26 @@ public final class McapRecorder implements AutoCloseable {
                 McapWriter.DEFAULT_CHUNK_SIZE_BYTES);
         try {
             return new McapRecorder(writer, world);
+        } catch (IOException | RuntimeException e) {
+            writer.close();
+            throw e;
+        }
+    }
+
+    /**
+     * Creates the file of a world with several robots and writes its header, schemas, every robot's channels and
+     * /world.
+     *
+     * @param file  run.mcap
+     * @param world the world, with every robot
+     * @return the fleet's recorders
+     * @throws IOException when the file cannot be written
+     */
+    public static Fleet openFleet(Path file, WorldSpec world) throws IOException {
+        McapWriter writer = new McapWriter(new BufferedOutputStream(Files.newOutputStream(file), 1 << 16), "", LIBRARY,
+                McapWriter.DEFAULT_CHUNK_SIZE_BYTES);
+        try {
+            return new Fleet(writer, world);
         } catch (IOException | RuntimeException e) {
             writer.close();
             throw e;
@@ -123,7 +228,7 @@ public final class McapRecorder implements AutoCloseable {
         long t = s.simTimeMs();
         lastStepMs = t;
         j.begin().open().name("timestamp").time(t).name("parent_frame_id").string("world")
-                .name("child_frame_id").string("base_link").name("translation");
+                .name("child_frame_id").string(baseLink).name("translation");
         Scene.vector(j, s.xM(), s.yM(), 0);
         j.name("rotation");
         Scene.quaternion(j, s.headingRad());
@@ -187,7 +292,7 @@ public final class McapRecorder implements AutoCloseable {
     }
 
     private void writeScan(long t, double[] rays) {
-        j.begin().open().name("timestamp").time(t).name("frame_id").string("base_link").name("pose");
+        j.begin().open().name("timestamp").time(t).name("frame_id").string(baseLink).name("pose");
         Scene.pose(j, 0, 0, 0.05, 0);
         j.name("start_angle").number(scan.startRad, 6).name("end_angle").number(scan.endRad, 6);
         j.name("ranges").openArray();
@@ -266,7 +371,9 @@ public final class McapRecorder implements AutoCloseable {
             failure = e;
         }
         try {
-            writer.close();
+            if (ownsFile) {
+                writer.close();
+            }
         } catch (IOException e) {
             if (failure == null) {
                 failure = e;

@@ -1,5 +1,6 @@
 package org.proactiverobotics.app.foxglove;
 
+import java.util.ArrayList;
 import java.util.List;
 import org.proactiverobotics.sim2d.WorldSpec;
 
@@ -19,6 +20,23 @@ final class Scene {
     }
 
     static void write(JsonText j, WorldSpec world) {
+        write(j, world, false);
+    }
+
+    /**
+     * The scene of a world with several robots: every robot's checkpoints (labelled "id.k"), every station, and
+     * each robot's body locked to its own frame {@link #baseLink(int) robot_N/base_link}.
+     */
+    static void writeFleet(JsonText j, WorldSpec world) {
+        write(j, world, true);
+    }
+
+    /** @return the frame of robot {@code id}'s body in a world of several robots */
+    static String baseLink(int id) {
+        return "robot_" + id + "/base_link";
+    }
+
+    private static void write(JsonText j, WorldSpec world, boolean fleet) {
         j.begin().open().name("deletions").openArray().closeArray().name("entities").openArray();
 
         entity(j, "arena", "world", false);
@@ -68,25 +86,44 @@ final class Scene {
 
         entity(j, "checkpoints", "world", false);
         j.name("cubes").openArray().closeArray().name("cylinders").openArray();
-        for (WorldSpec.Checkpoint c : world.checkpoints()) {
-            cylinder(j, c.x(), c.y(), 0.005, 2 * world.checkpointRadiusM(), 0.01, 1.0, 0.6, 0.0, 0.6);
+        List<Label> labels = new ArrayList<>();
+        for (WorldSpec.RobotEntry r : fleet ? world.robots() : world.robots().subList(0, 1)) {
+            for (int i = 0; i < r.checkpoints().size(); i++) {
+                WorldSpec.Checkpoint c = r.checkpoints().get(i);
+                cylinder(j, c.x(), c.y(), 0.005, 2 * world.checkpointRadiusM(), 0.01, 1.0, 0.6, 0.0, 0.6);
+                labels.add(new Label(c.x(), c.y(), fleet ? r.id() + "." + (i + 1) : Integer.toString(i + 1)));
+            }
         }
         j.closeArray().name("lines").openArray().closeArray();
-        String[] labels = new String[world.checkpoints().size()];
-        for (int i = 0; i < labels.length; i++) {
-            labels[i] = Integer.toString(i + 1);
-        }
-        endEntity(j, textsAt(world, labels));
+        endEntity(j, labels);
 
-        WorldSpec.RechargeStation s = world.rechargeStation();
         entity(j, "station", "world", false);
         j.name("cubes").openArray().closeArray().name("cylinders").openArray();
-        cylinder(j, s.x(), s.y(), 0.005, 2 * s.radiusM(), 0.01, 0.1, 0.7, 0.2, 0.6);
+        List<WorldSpec.RechargeStation> stations = fleet ? world.rechargeStations() : List.of(world.rechargeStation());
+        for (WorldSpec.RechargeStation s : stations) {
+            cylinder(j, s.x(), s.y(), 0.005, 2 * s.radiusM(), 0.01, 0.1, 0.7, 0.2, 0.6);
+        }
         j.closeArray().name("lines").openArray().closeArray();
-        endEntity(j, List.of(new Label(s.x(), s.y(), "station")));
+        List<Label> stationLabels = new ArrayList<>();
+        for (WorldSpec.RechargeStation s : stations) {
+            stationLabels.add(new Label(s.x(), s.y(), "station"));
+        }
+        endEntity(j, stationLabels);
 
-        double body = world.robot().radiusM();
-        entity(j, "robot", "base_link", true);
+        if (!fleet) {
+            body(j, world.robot().radiusM(), "robot", "base_link");
+        } else {
+            for (WorldSpec.RobotEntry r : world.robots()) {
+                body(j, r.robot().radiusM(), "robot_" + r.id(), baseLink(r.id()));
+            }
+        }
+
+        j.closeArray().close().end();
+    }
+
+    /** A robot's body, a disc with a line to its front, locked to its frame. */
+    private static void body(JsonText j, double body, String id, String frame) {
+        entity(j, id, frame, true);
         j.name("cubes").openArray().closeArray().name("cylinders").openArray();
         cylinder(j, 0, 0, 0.05, 2 * body, 0.1, 0.2, 0.4, 0.9, 0.9);
         j.closeArray().name("lines").openArray().open().name("type").integer(0).name("pose");
@@ -98,21 +135,10 @@ final class Scene {
         color(j, 1, 1, 1, 1);
         j.name("colors").openArray().closeArray().name("indices").openArray().closeArray().close().closeArray();
         endEntity(j, List.of());
-
-        j.closeArray().close().end();
     }
 
     /** A text label at a point of the world. */
     private record Label(double x, double y, String text) {
-    }
-
-    private static List<Label> textsAt(WorldSpec world, String[] labels) {
-        List<Label> list = new java.util.ArrayList<>();
-        for (int i = 0; i < labels.length; i++) {
-            WorldSpec.Checkpoint c = world.checkpoints().get(i);
-            list.add(new Label(c.x(), c.y(), labels[i]));
-        }
-        return list;
     }
 
     private static void entity(JsonText j, String id, String frame, boolean locked) {

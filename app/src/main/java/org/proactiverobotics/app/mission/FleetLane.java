@@ -2,9 +2,12 @@ package org.proactiverobotics.app.mission;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
+import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.replay.ReplayData;
+import org.proactiverobotics.app.replay.ReplayRobot;
 import org.proactiverobotics.app.replay.SeenReadings;
 import org.proactiverobotics.engine.CommandArray;
 import org.proactiverobotics.engine.IterationSummary;
@@ -14,6 +17,7 @@ import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.sim2d.GroundTruth;
 import org.proactiverobotics.sim2d.Simulation;
 import org.proactiverobotics.sim2d.SvgRenderer;
+import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * One robot of a {@link FleetMission}: its engine, its controller, and what its part of the trace and the report
@@ -29,7 +33,8 @@ final class FleetLane {
     final Map<String, Long> commandWins = new TreeMap<>();
     final List<SvgRenderer.TrajectoryPoint> path = new ArrayList<>();
     final List<SvgRenderer.Marker> markers = new ArrayList<>();
-    final ReplayData replay;
+    /** Its steps for replay.html, made once its engine's CommandArray slots are known. */
+    ReplayData replay;
     RobotEngine engine;
     ProactiveController controller;
     StepTracer tracer;
@@ -50,7 +55,6 @@ final class FleetLane {
     FleetLane(int index, int robotId, Simulation sim) {
         this.index = index;
         this.robotId = robotId;
-        this.replay = new ReplayData(Map.of(), sim.robot(index).distanceSensors().size());
         this.recharges = sim.groundTruth(index).recharges();
         GroundTruth t = sim.groundTruth(index);
         path.add(new SvgRenderer.TrajectoryPoint(t.x(), t.y(), category()));
@@ -97,6 +101,18 @@ final class FleetLane {
     /** @return how its mission ended, or null while it goes on */
     Outcome outcome() {
         return outcome;
+    }
+
+    /**
+     * @param entry  its entry of the world's robots
+     * @param report the whole run's report (its robots' parts included)
+     * @return this robot as replay.html shows it
+     */
+    ReplayRobot replayRobot(WorldSpec.RobotEntry entry, MissionReport report) {
+        RobotReport mine = report.robots().stream().filter(r -> r.id() == robotId).findFirst().orElseThrow();
+        String line = String.format(Locale.ROOT, "robot %d: %s, checkpoints %d/%d, %s", robotId, mine.reason(),
+                mine.checkpointsReached(), mine.checkpointsTotal(), Plural.of(mine.collisions(), "collision"));
+        return new ReplayRobot(robotId, mine.outcome().name(), line, entry, replay);
     }
 
     /** @return its part of report.json (call once the run is over) */

@@ -16,9 +16,12 @@ import java.util.concurrent.Future;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.function.UnaryOperator;
+import org.proactiverobotics.app.foxglove.McapRecorder;
 import org.proactiverobotics.app.link.DirectEngineTables;
 import org.proactiverobotics.app.link.DirectLink;
+import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.ReplayPage;
+import org.proactiverobotics.app.replay.ReplayRobot;
 import org.proactiverobotics.app.replay.SeenReadings;
 import org.proactiverobotics.db.Databases;
 import org.proactiverobotics.db.RobotRows;
@@ -55,6 +58,7 @@ final class FleetMission {
     private final int threads;
     private final UnaryOperator<EngineTables> engineTables;
     private final Consumer<Simulation> stepHook;
+    private boolean mcap;
 
     /**
      * @param options      what to run (its world has several robots; {@code robotId} is not used: ids are the world's)
@@ -71,6 +75,17 @@ final class FleetMission {
         this.threads = threads;
         this.engineTables = engineTables;
         this.stepHook = stepHook;
+    }
+
+    /**
+     * Also writes run.mcap: one file, each robot's topics under {@code /robot/ID} (docs/foxglove.md).
+     *
+     * @param enabled whether to
+     * @return this
+     */
+    FleetMission mcap(boolean enabled) {
+        this.mcap = enabled;
+        return this;
     }
 
     /**
@@ -134,19 +149,25 @@ final class FleetMission {
             t.setDaemon(true);
             return t;
         }) : null;
-        try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"))) {
-            for (FleetLane lane : lanes) {
-                lane.tracer = new StepTracer(sim, lane.index, lane.robotId, traceWriter, lane.replay, lane.belief, null);
+        try (TraceWriter traceWriter = new TraceWriter(outDir.resolve("trace.jsonl"));
+             McapRecorder.Fleet recorder = mcap ? McapRecorder.openFleet(outDir.resolve(McapRecorder.FILE_NAME),
+                     options.world()) : null) {
+            for (FleetLane lane : lanes) { // the replay's suggestion columns are the engine's slots, as in a one-robot run
+                lane.replay = new ReplayData(lane.engine.slots(), sim.robot(lane.index).distanceSensors().size());
+                lane.tracer = new StepTracer(sim, lane.index, lane.robotId, traceWriter, lane.replay, lane.belief,
+                        recorder == null ? null : recorder.robot(lane.index));
                 lane.tracer.seen(lane.seen);
                 lane.tracer.slots(lane.engine.slots());
             }
             MissionReport report = loop(sim, lanes, pool);
             writePicture(sim, lanes, outDir.resolve("trajectory.svg"));
-            // The replay page shows the first robot for now (the fleet page is to come); trace.jsonl has every robot.
-            FleetLane first = lanes.get(0);
-            ReplayPage.write(outDir.resolve("replay.html"), ReplayPage.Source.RUN, options.world().forRobot(0),
-                    ScenarioColours.of(first.engine.slots()), first.replay,
-                    "robot " + first.robotId + " of " + lanes.size() + ": " + Mission.summary(report));
+            List<ReplayRobot> shown = new ArrayList<>();
+            for (FleetLane lane : lanes) {
+                shown.add(lane.replayRobot(options.world().robots().get(lane.index), report));
+            }
+            ReplayPage.writeFleet(outDir.resolve("replay.html"), ReplayPage.Source.RUN, options.world(),
+                    ScenarioColours.of(lanes.get(0).engine.slots()), shown,
+                    lanes.size() + " robots: " + Mission.summary(report));
             return report;
         } finally {
             if (pool != null) {

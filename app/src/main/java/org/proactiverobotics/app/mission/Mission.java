@@ -129,7 +129,7 @@ public final class Mission {
      */
     public MissionReport run(Path outDir) throws SQLException, IOException {
         if (options.world().hasSeveralRobots()) {
-            return new FleetMission(options, threads, engineTables, stepHook).run(outDir);
+            return new FleetMission(options, threads, engineTables, stepHook).mcap(mcap).run(outDir);
         }
         if (options.link() == MissionOptions.Link.DIRECT) {
             return runDirect(outDir);

@@ -9,7 +9,9 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
+import java.util.regex.Pattern;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -30,6 +32,13 @@ public final class ReplayPage {
     }
 
     private static final String DATA_MARK = "/*REPLAY_DATA*/null";
+    /**
+     * The template's parts for a world of several robots, cut from a one-robot page so that it stays what it was:
+     * whole lines (the mark at a line's start), pieces of a line, and pieces of HTML.
+     */
+    private static final Pattern FLEET_LINES = Pattern.compile("(?m)^[ \\t]*/\\*FLEET\\{\\*/(?s:.*?)/\\*\\}FLEET\\*/\\n");
+    private static final Pattern FLEET_PIECES = Pattern.compile("/\\*FLEET\\{\\*/(?s:.*?)/\\*\\}FLEET\\*/");
+    private static final Pattern FLEET_HTML = Pattern.compile("<!--FLEET\\{-->(?s:.*?)<!--\\}FLEET-->");
     /** HTML-safe: a scenario named {@code </script>} stays inside its string. */
     private static final Gson GSON = new Gson();
 
@@ -53,11 +62,51 @@ public final class ReplayPage {
     }
 
     /**
-     * @param data the page's data object ({@link #header})
+     * Writes the replay.html of a world with several robots: every robot drawn, the record of the one picked.
+     *
+     * @param file    where
+     * @param source  who made it
+     * @param world   the world (its arena, obstacles and stations are drawn)
+     * @param colours colour by scenario name
+     * @param robots  every robot with its steps, in the world's order
+     * @param summary one line on how the whole run went
+     * @throws IOException when it cannot be written
+     */
+    public static void writeFleet(Path file, Source source, WorldSpec world, Map<String, String> colours,
+                                  List<ReplayRobot> robots, String summary) throws IOException {
+        JsonObject data = header(source, world, colours, summary, null);
+        fleet(data, world, robots);
+        Files.writeString(file, html(data));
+    }
+
+    /**
+     * Makes a page's data that of a world with several robots: every robot, and every station of the world.
+     *
+     * @param data   the page's data ({@link #header})
+     * @param world  the world, or null
+     * @param robots every robot with its steps so far
+     */
+    public static void fleet(JsonObject data, WorldSpec world, List<ReplayRobot> robots) {
+        data.add("robots", ReplayRobot.toJson(robots, 0));
+        if (world != null && data.get("world").isJsonObject()) {
+            JsonArray stations = new JsonArray();
+            for (WorldSpec.RechargeStation s : world.rechargeStations()) {
+                JsonObject st = new JsonObject();
+                st.addProperty("x", s.x());
+                st.addProperty("y", s.y());
+                st.addProperty("radiusM", s.radiusM());
+                stations.add(st);
+            }
+            data.getAsJsonObject("world").add("stations", stations);
+        }
+    }
+
+    /**
+     * @param data the page's data object ({@link #header}; with {@code robots} for a world of several)
      * @return the page with the data inline
      */
     public static String html(JsonObject data) {
-        String template = template();
+        String template = template(data.has("robots"));
         int at = template.indexOf(DATA_MARK);
         if (at < 0) {
             throw new IllegalStateException("replay.html template has no " + DATA_MARK);
@@ -138,7 +187,21 @@ public final class ReplayPage {
         return o;
     }
 
-    /** @return the template, from the jar */
+    /**
+     * @param fleet whether the page shows a world of several robots
+     * @return the template, its fleet parts kept or cut out
+     */
+    public static String template(boolean fleet) {
+        String t = template();
+        if (fleet) {
+            return t;
+        }
+        t = FLEET_LINES.matcher(t).replaceAll("");
+        t = FLEET_PIECES.matcher(t).replaceAll("");
+        return FLEET_HTML.matcher(t).replaceAll("");
+    }
+
+    /** @return the template as the jar holds it (with the fleet parts) */
     public static String template() {
         try (InputStream in = ReplayPage.class.getResourceAsStream("/replay/replay.html")) {
             if (in == null) {

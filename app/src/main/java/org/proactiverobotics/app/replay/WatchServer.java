@@ -1,6 +1,7 @@
 package org.proactiverobotics.app.replay;
 
 import com.google.gson.Gson;
+import com.google.gson.JsonArray;
 import com.google.gson.JsonObject;
 import com.sun.net.httpserver.HttpExchange;
 import com.sun.net.httpserver.HttpServer;
@@ -8,6 +9,8 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import org.proactiverobotics.app.mission.ScenarioColours;
@@ -17,6 +20,10 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * The live view's HTTP server (the JDK's {@link HttpServer}): {@code /} is replay.html with no
  * steps, which polls {@code /steps?from=K} for the steps from K on, as {@link LiveMission} read
  * them. GET only; nothing it serves writes to the database.
+ * <p>
+ * A world of several robots (docs/replay.md, "Several robots") is followed robot by robot, one {@link LiveMission} each: the page
+ * draws every robot and shows the picked one's record, and {@code /steps?from=K1,K2,...} answers
+ * {@code {"status": ..., "robots": [part, ...]}}, each robot's steps from its K on, in the world's order.
  */
 public final class WatchServer implements AutoCloseable {
 
@@ -31,6 +38,8 @@ public final class WatchServer implements AutoCloseable {
     private final LiveMission mission;
     private final WorldSpec world;
     private final int robotId;
+    /** Every robot followed, in the world's order, when the world has several; empty otherwise. */
+    private final List<LiveMission> fleet;
     private volatile String status = "";
 
     /**
@@ -43,9 +52,27 @@ public final class WatchServer implements AutoCloseable {
      * @throws IOException when the address cannot be bound (a {@link java.net.BindException} when in use)
      */
     public WatchServer(InetSocketAddress address, LiveMission mission, WorldSpec world, int robotId) throws IOException {
+        this(address, mission, world, robotId, List.of());
+    }
+
+    /**
+     * Binds and starts serving a world of several robots.
+     *
+     * @param address where to listen
+     * @param world   the world file, with every robot
+     * @param fleet   one live mission per robot of the world, in its order
+     * @throws IOException when the address cannot be bound
+     */
+    public WatchServer(InetSocketAddress address, WorldSpec world, List<LiveMission> fleet) throws IOException {
+        this(address, fleet.get(0), world, world.robots().get(0).id(), List.copyOf(fleet));
+    }
+
+    private WatchServer(InetSocketAddress address, LiveMission mission, WorldSpec world, int robotId,
+                        List<LiveMission> fleet) throws IOException {
         this.mission = mission;
         this.world = world;
         this.robotId = robotId;
+        this.fleet = fleet;
         this.server = HttpServer.create(address, 16);
         server.createContext("/", this::page);
         server.createContext("/steps", this::steps);
@@ -79,11 +106,24 @@ public final class WatchServer implements AutoCloseable {
         JsonObject data = ReplayPage.header(ReplayPage.Source.WATCH, world, ScenarioColours.of(mission.slots()),
                 "robot " + robotId + ", live from the database", null);
         data.addProperty("robotId", robotId);
+        if (!fleet.isEmpty()) {
+            List<ReplayRobot> robots = new ArrayList<>();
+            for (int i = 0; i < fleet.size(); i++) {
+                WorldSpec.RobotEntry entry = world.robots().get(i);
+                robots.add(new ReplayRobot(entry.id(), null, "robot " + entry.id() + " of " + fleet.size()
+                        + ", live from the database", entry, fleet.get(i).data()));
+            }
+            ReplayPage.fleet(data, world, robots);
+        }
         send(ex, 200, "text/html; charset=utf-8", ReplayPage.html(data));
     }
 
     private void steps(HttpExchange ex) throws IOException {
         if (!allowed(ex)) {
+            return;
+        }
+        if (!fleet.isEmpty()) {
+            fleetSteps(ex);
             return;
         }
         int from = 0;
@@ -110,6 +150,36 @@ public final class WatchServer implements AutoCloseable {
             part.add("world", mission.mission());
         }
         send(ex, 200, "application/json; charset=utf-8", GSON.toJson(part));
+    }
+
+    /** {@code /steps?from=K1,K2,...}: each robot's steps from its K on (0 where the list is short). */
+    private void fleetSteps(HttpExchange ex) throws IOException {
+        int[] from = new int[fleet.size()];
+        String query = ex.getRequestURI().getQuery();
+        if (query != null) {
+            for (String pair : query.split("&")) {
+                if (pair.startsWith("from=")) {
+                    String[] each = pair.substring(5).split(",");
+                    for (int i = 0; i < Math.min(each.length, from.length); i++) {
+                        try {
+                            from[i] = Math.max(0, Integer.parseInt(each[i]));
+                        } catch (NumberFormatException e) {
+                            send(ex, 400, "text/plain; charset=utf-8", "from must be step numbers, one a robot: " + pair);
+                            return;
+                        }
+                    }
+                }
+            }
+        }
+        JsonObject answer = new JsonObject();
+        answer.addProperty("status", status);
+        JsonArray parts = new JsonArray(fleet.size());
+        for (int i = 0; i < fleet.size(); i++) {
+            ReplayData data = fleet.get(i).data();
+            parts.add(data.toJson(from[i] > data.size() ? 0 : from[i])); // past its end: a new run, start over
+        }
+        answer.add("robots", parts);
+        send(ex, 200, "application/json; charset=utf-8", GSON.toJson(answer));
     }
 
     private static boolean allowed(HttpExchange ex) throws IOException {

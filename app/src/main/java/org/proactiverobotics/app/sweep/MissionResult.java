@@ -1,7 +1,9 @@
 package org.proactiverobotics.app.sweep;
 
+import java.util.List;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.PoseError;
+import org.proactiverobotics.app.mission.RobotReport;
 
 /**
  * One row of results.csv: what a mission of the sweep ended with, from its report; or, for a
@@ -21,10 +23,13 @@ import org.proactiverobotics.app.mission.PoseError;
  * @param reason             why the mission failed, in a few words; empty when it was accomplished
  * @param poseError          report.json's pose error; null (empty cells) when the engine never had a pose, or for
  *                           an {@value #ERROR}
+ * @param robots             each robot's own report in a world of several robots (robots.csv); empty for a one-robot
+ *                           world and for an {@value #ERROR}
  */
 public record MissionResult(SweepMission mission, String outcome, boolean success, int checkpointsReached,
                             int checkpointsTotal, double simTimeS, double wallTimeS, double distanceM, int collisions,
-                            double minBattery, int recharges, String reason, PoseError poseError) {
+                            double minBattery, int recharges, String reason, PoseError poseError,
+                            List<RobotReport> robots) {
 
     /** The outcome of a mission that threw before its end. */
     public static final String ERROR = "ERROR";
@@ -44,7 +49,8 @@ public record MissionResult(SweepMission mission, String outcome, boolean succes
         };
         return new MissionResult(mission, report.outcome().name(), report.success(), report.checkpointsReached(),
                 report.checkpointsTotal(), report.simTimeS(), report.wallTimeS(), report.distanceM(), report.collisions(),
-                report.minBattery(), report.recharges(), reason, report.poseError());
+                report.minBattery(), report.recharges(), reason, report.poseError(),
+                report.robots() == null ? List.of() : List.copyOf(report.robots()));
     }
 
     /**
@@ -59,7 +65,8 @@ public record MissionResult(SweepMission mission, String outcome, boolean succes
             cause = cause.getCause();
         }
         String message = cause.getMessage() == null ? "" : ": " + cause.getMessage();
-        return new MissionResult(mission, ERROR, false, 0, mission.world().checkpoints().size(), 0, wallTimeS, 0, 0, 0, 0,
-                cause.getClass().getSimpleName() + message, null);
+        int checkpoints = mission.world().robots().stream().mapToInt(r -> r.checkpoints().size()).sum();
+        return new MissionResult(mission, ERROR, false, 0, checkpoints, 0, wallTimeS, 0, 0, 0, 0,
+                cause.getClass().getSimpleName() + message, null, List.of());
     }
 }

@@ -30,6 +30,8 @@ public final class Sweep {
     private final AtomicBoolean stopped = new AtomicBoolean();
     private final CountDownLatch finished = new CountDownLatch(1);
     private final AtomicReference<UncheckedIOException> outputFailure = new AtomicReference<>();
+    /** robots.csv, when the sweep has worlds with several robots; null otherwise. */
+    private volatile RobotsCsv robotsCsv;
 
     /**
      * @param missions the missions, in order
@@ -43,6 +45,17 @@ public final class Sweep {
         this.missions = List.copyOf(missions);
         this.outDir = outDir;
         this.jobs = jobs;
+    }
+
+    /**
+     * Also writes each finished mission's robots to robots.csv (worlds with several robots).
+     *
+     * @param csv robots.csv
+     * @return this
+     */
+    public Sweep robots(RobotsCsv csv) {
+        this.robotsCsv = csv;
+        return this;
     }
 
     /** @return whether {@link #stop()} was called */
@@ -121,6 +134,9 @@ public final class Sweep {
         }
         try {
             csv.append(result);
+            if (robotsCsv != null) {
+                robotsCsv.append(result);
+            }
         } catch (UncheckedIOException e) {
             outputFailure.compareAndSet(null, e);
             stop();

@@ -8,6 +8,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
@@ -120,7 +121,12 @@ public final class SweepMerge {
         String part = "." + ProcessHandle.current().pid() + ".part"; // created as any file is (the umask's permissions)
         Path partialCsv = out.resolve("results.csv" + part);
         Path partialPage = out.resolve("summary.html" + part);
+        Path robots = out.resolve(RobotsCsv.FILE_NAME);
+        Path partialRobots = out.resolve(RobotsCsv.FILE_NAME + part);
         try {
+            if (mergeRobots(bySlice.values(), partialRobots)) { // shards of worlds with several robots
+                Files.move(partialRobots, robots, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            }
             try (ResultsCsv merged = new ResultsCsv(partialCsv)) {
                 for (CSVRecord r : rows.values()) {
                     merged.appendValues(r.toList());
@@ -132,8 +138,42 @@ public final class SweepMerge {
         } finally {
             Files.deleteIfExists(partialCsv);
             Files.deleteIfExists(partialPage);
+            Files.deleteIfExists(partialRobots);
         }
         return new Merged(rows.size(), accomplished, bySlice.size(), wallS);
+    }
+
+    /**
+     * The shards' robots.csv in one, in the missions' order (each mission's robots in the world's order).
+     *
+     * @return false when no shard has one (a sweep of one-robot worlds): nothing written
+     */
+    private static boolean mergeRobots(Collection<ShardDir> shards, Path file) throws IOException {
+        TreeMap<Integer, List<List<String>>> byMission = new TreeMap<>();
+        boolean any = false;
+        for (ShardDir s : shards) {
+            Path csv = s.dir().resolve(RobotsCsv.FILE_NAME);
+            if (!Files.exists(csv)) {
+                continue;
+            }
+            any = true;
+            try (Reader in = Files.newBufferedReader(csv, StandardCharsets.UTF_8);
+                 CSVParser p = ResultsCsv.FORMAT.builder().setHeader().setSkipHeaderRecord(true)
+                         .get().parse(in)) {
+                for (CSVRecord r : p) {
+                    byMission.computeIfAbsent(missionNumber(csv, r.get("mission")), k -> new ArrayList<>()).add(r.toList());
+                }
+            }
+        }
+        if (!any) {
+            return false;
+        }
+        try (RobotsCsv merged = new RobotsCsv(file)) {
+            for (List<List<String>> rows : byMission.values()) {
+                rows.forEach(merged::appendValues);
+            }
+        }
+        return true;
     }
 
     /** A row of results.csv as summary.html shows it, its link relative to out; a value that is not a number is refused. */
