@@ -290,56 +290,18 @@ public final class FleetProcess {
     private MissionReport report(Simulation sim, List<Lane> lanes, WorldLockstep lockstep, double wallS,
                                  MissionReport.Timing timing) {
         List<RobotReport> robots = new ArrayList<>();
-        Outcome outcome = Outcome.MISSION_ACCOMPLISHED;
-        int reached = 0;
-        int total = 0;
-        long controlSteps = 0;
-        long iterations = 0;
-        double distance = 0;
-        int collisions = 0;
-        int robotCollisions = 0;
-        double minClearance = Double.POSITIVE_INFINITY;
-        double minBattery = Double.POSITIVE_INFINITY;
-        double finalBattery = Double.POSITIVE_INFINITY;
-        int recharges = 0;
-        Map<String, Long> wins = new TreeMap<>();
+        List<GroundTruth> truths = new ArrayList<>();
         for (Lane lane : lanes) {
             GroundTruth t = sim.groundTruth(lane.index);
             Outcome end = lane.outcome != null ? lane.outcome : Outcome.STOPPED;
             long endMs = lane.outcome != null ? lane.endSimTimeMs : sim.simTimeMs();
             long laneIterations = lockstep == null ? 0 : lockstep.lastTick(lane.index).map(k -> k.iteration()).orElse(0L);
-            RobotReport r = RobotReport.of(lane.robotId, t, end, endMs, lane.controlSteps, laneIterations,
-                    lane.commandWins, 0, null);
-            robots.add(r);
-            if (outcome == Outcome.MISSION_ACCOMPLISHED && !r.success()) {
-                outcome = r.outcome();
-            }
-            reached += r.checkpointsReached();
-            total += r.checkpointsTotal();
-            controlSteps += r.controlSteps();
-            iterations += r.engineIterations();
-            distance += t.distanceM();
-            collisions += t.collisions();
-            robotCollisions += t.robotCollisions();
-            minClearance = Math.min(minClearance, t.minClearanceM());
-            minBattery = Math.min(minBattery, t.minBatteryPct());
-            finalBattery = Math.min(finalBattery, t.batteryPct());
-            recharges += t.recharges();
-            r.commandWins().forEach((k, v) -> wins.merge(k, v, Long::sum));
+            robots.add(RobotReport.of(lane.robotId, t, end, endMs, lane.controlSteps, laneIterations,
+                    lane.commandWins, 0, null));
+            truths.add(t);
         }
-        double simS = sim.simTimeMs() / 1000.0;
-        return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, null,
-                MissionReport.databaseKind(options.db().url()), reached, total, simS, round(wallS, 3),
-                round(simS / Math.max(wallS, 1e-9), 1), controlSteps, iterations,
-                round(distance, 3), collisions, robotCollisions, round(minClearance, 4),
-                round(minBattery, 2), round(finalBattery, 2), recharges, wins, null, null,
-                timing, List.copyOf(robots));
-    }
-
-    /** As report.json rounds. */
-    private static double round(double value, int decimals) {
-        double scale = Math.pow(10, decimals);
-        return Math.round(value * scale) / scale;
+        return MissionReport.ofRobots(sim, robots, truths, null, MissionReport.databaseKind(options.db().url()), wallS,
+                false, null, timing);
     }
 
     private static String idList(int[] ids) {

@@ -7,8 +7,6 @@ import java.sql.Connection;
 import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
-import java.util.TreeMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
@@ -264,49 +262,14 @@ final class FleetMission {
         for (FleetLane lane : lanes) {
             robots.add(lane.report(sim));
         }
-        Outcome outcome = Outcome.MISSION_ACCOMPLISHED;
-        int reached = 0;
-        int total = 0;
-        long controlSteps = 0;
-        long iterations = 0;
-        double distance = 0;
-        int collisions = 0;
-        int robotCollisions = 0;
-        double minClearance = Double.POSITIVE_INFINITY;
-        double minBattery = Double.POSITIVE_INFINITY;
-        double finalBattery = Double.POSITIVE_INFINITY;
-        int recharges = 0;
-        long failures = 0;
-        Map<String, Long> wins = new TreeMap<>();
+        List<GroundTruth> truths = new ArrayList<>();
         for (int i = 0; i < lanes.size(); i++) {
-            RobotReport r = robots.get(i);
-            GroundTruth t = sim.groundTruth(i);
-            if (outcome == Outcome.MISSION_ACCOMPLISHED && !r.success()) {
-                outcome = r.outcome();
-            }
-            reached += r.checkpointsReached();
-            total += r.checkpointsTotal();
-            controlSteps += r.controlSteps();
-            iterations += r.engineIterations();
-            distance += t.distanceM();
-            collisions += t.collisions();
-            robotCollisions += t.robotCollisions();
-            minClearance = Math.min(minClearance, t.minClearanceM());
-            minBattery = Math.min(minBattery, t.minBatteryPct());
-            finalBattery = Math.min(finalBattery, t.batteryPct());
-            recharges += t.recharges();
-            failures += r.ruleFailures();
-            r.commandWins().forEach((k, v) -> wins.merge(k, v, Long::sum));
+            truths.add(sim.groundTruth(i));
         }
-        double simS = sim.simTimeMs() / 1000.0;
         String database = options.link() == MissionOptions.Link.DIRECT ? "direct"
                 : MissionReport.databaseKind(options.jdbcUrl());
-        return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome,
-                options.strategy().name(), database, reached, total, simS, MissionReport.round(wallS, 3),
-                MissionReport.round(simS / Math.max(wallS, 1e-9), 1), controlSteps, iterations,
-                MissionReport.round(distance, 3), collisions, robotCollisions, MissionReport.round(minClearance, 4),
-                MissionReport.round(minBattery, 2), MissionReport.round(finalBattery, 2), recharges, wins, failures,
-                poseError, timing, List.copyOf(robots));
+        return MissionReport.ofRobots(sim, robots, truths, options.strategy().name(), database, wallS, true, poseError,
+                timing);
     }
 
     /** Every robot's path in a colour of its own, a marker at each recharge and where each robot ended. */

@@ -109,6 +109,66 @@ public record MissionReport(
                 timing, null);
     }
 
+    /**
+     * The whole run's report of a world with several robots: success only when every robot accomplished its
+     * mission, the outcome the first robot's (in the file's order) that did not, sums and minima over the robots.
+     *
+     * @param sim          the simulation, at the run's end
+     * @param robots       each robot's report
+     * @param truths       each robot's ground truth, in the same order
+     * @param strategy     the strategy the run started with, or null when this process cannot see it
+     * @param database     the kind of database ({@link #databaseKind}) or "direct"
+     * @param wallTimeS    wall-clock seconds of the run's loop
+     * @param withFailures whether the robots' rule failures are known to this process (else null)
+     * @param poseError    the engines' pose error over every robot, or null
+     * @param timing       mean wall time per world step by phase, or null
+     * @return the report, with {@code robots}
+     */
+    public static MissionReport ofRobots(Simulation sim, List<RobotReport> robots, List<GroundTruth> truths,
+                                         String strategy, String database, double wallTimeS, boolean withFailures,
+                                         PoseError poseError, Timing timing) {
+        Outcome outcome = Outcome.MISSION_ACCOMPLISHED;
+        int reached = 0;
+        int total = 0;
+        long controlSteps = 0;
+        long iterations = 0;
+        double distance = 0;
+        int collisions = 0;
+        int robotCollisions = 0;
+        double minClearance = Double.POSITIVE_INFINITY;
+        double minBattery = Double.POSITIVE_INFINITY;
+        double finalBattery = Double.POSITIVE_INFINITY;
+        int recharges = 0;
+        long failures = 0;
+        Map<String, Long> wins = new TreeMap<>();
+        for (int i = 0; i < robots.size(); i++) {
+            RobotReport r = robots.get(i);
+            GroundTruth t = truths.get(i);
+            if (outcome == Outcome.MISSION_ACCOMPLISHED && !r.success()) {
+                outcome = r.outcome();
+            }
+            reached += r.checkpointsReached();
+            total += r.checkpointsTotal();
+            controlSteps += r.controlSteps();
+            iterations += r.engineIterations();
+            distance += t.distanceM();
+            collisions += t.collisions();
+            robotCollisions += t.robotCollisions();
+            minClearance = Math.min(minClearance, t.minClearanceM());
+            minBattery = Math.min(minBattery, t.minBatteryPct());
+            finalBattery = Math.min(finalBattery, t.batteryPct());
+            recharges += t.recharges();
+            failures += r.ruleFailures();
+            r.commandWins().forEach((k, v) -> wins.merge(k, v, Long::sum));
+        }
+        double simS = sim.simTimeMs() / 1000.0;
+        return new MissionReport(sim.spec().name(), outcome == Outcome.MISSION_ACCOMPLISHED, outcome, strategy, database,
+                reached, total, simS, round(wallTimeS, 3), round(simS / Math.max(wallTimeS, 1e-9), 1), controlSteps,
+                iterations, round(distance, 3), collisions, robotCollisions, round(minClearance, 4),
+                round(minBattery, 2), round(finalBattery, 2), recharges, wins, withFailures ? failures : null,
+                poseError, timing, List.copyOf(robots));
+    }
+
     /** @return whether this is the report of a world with several robots (it has {@link #robots()}) */
     public boolean hasRobots() {
         return robots != null;
