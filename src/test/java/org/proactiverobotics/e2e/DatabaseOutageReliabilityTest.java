@@ -76,8 +76,10 @@ class DatabaseOutageReliabilityTest {
             // asked for it some steps earlier), plus the step the cut falls in, the step the failure is seen in, and two
             // of slack (the published step may trail the robot's). Waiting for the 1 s watchdog instead allows 0.5 m.
             double allowedM = MAX_SPEED_MPS * (Math.max(0, cutAtSimMs - (long) before[2]) + 4 * TIME_STEP_MS) / 1000.0;
+            // Kept stepping, not frozen: at least a quarter of the outage's wall time at its factor of 2 (a loaded
+            // machine's real-time pacing falls behind: CI once saw 3 840 simulated ms across the 4 s outage).
             assertThat(after[2] - before[2]).as("simulated ms between the two positions: the robot kept stepping")
-                    .isGreaterThan(OUTAGE.toMillis());
+                    .isGreaterThan(OUTAGE.toMillis() / 2);
             assertThat(movedM).as("metres driven across a %d ms outage", OUTAGE.toMillis())
                     .isLessThanOrEqualTo(allowedM);
 
