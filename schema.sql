@@ -121,10 +121,13 @@ CREATE TABLE IF NOT EXISTS initial_pose (
 -- every run, from the world file's robot): its top wheel speed, metres per second, and the
 -- distance between its wheels (twice its radius), metres. An engine serving robots of different
 -- sizes drives each with its own; without a row it takes its --max-speed-mps / --axle-width-m.
+-- shared_world: other robots share the robot's world (a world file with `robots`), so its engine
+-- runs the traffic scenario, Yield, as `run` does.
 CREATE TABLE IF NOT EXISTS robot_body (
-  robot_id      INT    NOT NULL PRIMARY KEY,
-  max_speed_mps DOUBLE NOT NULL,
-  axle_width_m  DOUBLE NOT NULL
+  robot_id      INT     NOT NULL PRIMARY KEY,
+  max_speed_mps DOUBLE  NOT NULL,
+  axle_width_m  DOUBLE  NOT NULL,
+  shared_world  BOOLEAN NOT NULL DEFAULT FALSE
 );
 
 -- ======================================================================================

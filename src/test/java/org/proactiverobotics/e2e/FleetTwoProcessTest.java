@@ -89,10 +89,14 @@ class FleetTwoProcessTest {
 
             // each engine drove its robots with their own bodies, as run drives them (robot 1's is the options' default)
             assertThat(Files.readString(logA)).contains("robot 2 drives at up to 0.35 m/s with 0.320 m between its wheels")
-                    .doesNotContain("robot 1 drives at")
+                    .contains("robot 1 drives at") // its default profile, among other robots
                     .contains("lease of robot 1 taken").contains("lease of robot 2 taken").doesNotContain("lease of robot 3");
             assertThat(Files.readString(logB)).contains("lease of robot 3 taken");
             assertThat(deployment.queryLong("SELECT ROUND(axle_width_m * 1000) FROM robot_body WHERE robot_id = 2")).isEqualTo(320);
+            // every robot shares its world: its process said so, and its engine ranks Yield as run's does
+            assertThat(deployment.queryLong("SELECT COUNT(*) FROM robot_body WHERE shared_world")).isEqualTo(3);
+            assertThat(deployment.queryLong("SELECT COUNT(DISTINCT robot_id) FROM strategy WHERE scenario = 'Yield'")).isEqualTo(3);
+            assertThat(Files.readString(logA)).contains("between its wheels, among other robots");
 
             MissionReport h2 = new Mission(new MissionOptions(WorldFiles.load(world),
                     Databases.embeddedH2Url("three_hops_" + System.nanoTime()), "sa", "", "safety-first", 1))

@@ -173,6 +173,33 @@ class FleetWorldCommandsTest extends CommandLineTest {
         return Math.hypot(robot.x() - x, robot.y() - y);
     }
 
+    /**
+     * A strategy file may rank the traffic scenario, Yield, for a world with several robots (where the engine runs it);
+     * for a one-robot world, which has no Yield, the same file is refused naming it, exit 2, nothing written.
+     */
+    @Test
+    void aStrategyFileMayRankYieldForAWorldWithSeveralRobotsOnly() throws Exception {
+        Path strategy = Files.writeString(tmp.resolve("yield-low.json"), "{\"name\": \"yield-low\", \"priorities\":"
+                + " {\"ObstacleAvoidance\": 9, \"BatteryMonitor\": 5, \"Yield\": 4, \"ReachDestination\": 1}}");
+        Path fleet = Files.writeString(tmp.resolve("three-hops.json"), FleetTwoProcessTest.THREE_HOPS);
+        Path out = tmp.resolve("fleet-out");
+        assertThat(run("run", "--world", fleet.toString(), "--link", "direct", "--strategy-file", strategy.toString(),
+                "--quiet", "--out", out.toString())).as(err.toString()).isZero();
+        assertThat(out.toString()).isNotEmpty();
+        assertThat(err.toString()).doesNotContain("leaves out");
+        assertThat(JsonParser.parseString(Files.readString(out.resolve("report.json"))).getAsJsonObject().get("strategy")
+                .getAsString()).isEqualTo("yield-low");
+
+        Path one = Files.writeString(tmp.resolve("one.json"), "{\"name\": \"one\", \"arena\": {\"radiusM\": 2.0},"
+                + " \"robot\": {\"x\": 0, \"y\": 0, \"headingDeg\": 0}, \"checkpoints\": [{\"x\": 1, \"y\": 0}],"
+                + " \"rechargeStation\": {\"x\": -1, \"y\": 0, \"radiusM\": 0.3}}");
+        Path oneOut = tmp.resolve("one-out");
+        assertThat(run("run", "--world", one.toString(), "--link", "direct", "--strategy-file", strategy.toString(),
+                "--quiet", "--out", oneOut.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("yield-low.json: strategy yield-low names scenario 'Yield', which is not loaded");
+        assertThat(oneOut).doesNotExist();
+    }
+
     @Test
     void generateRobotsOutOfRangeIsBadInputAndWritesNothing() {
         Path out = tmp.resolve("out");

@@ -120,7 +120,7 @@ public final class EngineCommand implements Callable<Integer> {
         ScenarioOptions.Choice choice = null;
         if (problem == null) {
             try {
-                choice = scenarios.load();
+                choice = scenarios.load(true); // which robots share a world, each one's body says
             } catch (IllegalArgumentException e) { // a plug-in or strategy that cannot be used
                 problem = e.getMessage();
             }
@@ -176,8 +176,8 @@ public final class EngineCommand implements Callable<Integer> {
                 for (int id : group) {
                     EngineLease lease = new EngineLease(pool, id, name, leaseMs);
                     ScenarioPlugins plugins = choice.plugins();
-                    servers.add(new RobotServer(id, (robot, profile) -> RobotEngine.builder().robotId(robot).database(pool)
-                            .drive(profile).plugins(plugins).guard(lease::confirm).build(), bodies, drive,
+                    servers.add(new RobotServer(id, (robot, body) -> RobotEngine.builder().robotId(robot).database(pool)
+                            .drive(body.drive()).sharedWorld(body.sharedWorld()).plugins(plugins).guard(lease::confirm).build(), bodies, drive,
                             new JdbcEngineClock(pool, id), lease, options, group == standby, ids.length + standby.length > 1));
                 }
             }

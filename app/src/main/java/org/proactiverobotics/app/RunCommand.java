@@ -123,7 +123,7 @@ public final class RunCommand implements Callable<Integer> {
         }
         ScenarioOptions.Choice choice;
         try {
-            choice = scenarios.load();
+            choice = scenarios.load(spec.hasSeveralRobots());
         } catch (IllegalArgumentException e) { // a plug-in or strategy that cannot be used
             err.println(e.getMessage());
             err.flush();

@@ -55,23 +55,27 @@ public final class ScenarioOptions {
     /**
      * Loads the plug-ins and the strategy.
      *
+     * @param mayShareWorld whether the engine may run among other robots (a world with several, or an
+     *                      engine process, which learns it from each robot's body): the strategy may
+     *                      then name the traffic scenario, Yield, and one that does not gets it ranked
+     *                      as {@link Strategy#forSharedWorld()} ranks it
      * @return the choice
      * @throws IllegalArgumentException ({@link PluginException}, {@link StrategyException}) naming the
      *                                  path, the file, the scenario or the key: bad input
      */
-    public Choice load() {
+    public Choice load(boolean mayShareWorld) {
         if (strategy != null && strategyFile != null) {
             throw new StrategyException("give --strategy or --strategy-file, not both");
         }
         ScenarioPlugins plugins = ScenarioPlugins.load(scenarios, RobotEngine.builtInScenarios());
         Strategy chosen = strategyFile != null ? Strategy.read(strategyFile)
                 : Strategy.named(strategy != null ? strategy : Strategy.SAFETY_FIRST);
-        Map<String, Integer> slots = RobotEngine.freshSlots(plugins);
+        Map<String, Integer> slots = RobotEngine.freshSlots(plugins, mayShareWorld);
         try {
             chosen.check(slots);
         } catch (StrategyException e) {
             throw strategyFile == null ? e : new StrategyException("strategy file " + strategyFile + ": " + e.getMessage());
         }
-        return new Choice(plugins, chosen, chosen.unlisted(slots));
+        return new Choice(plugins, chosen, (mayShareWorld ? chosen.forSharedWorld() : chosen).unlisted(slots));
     }
 }

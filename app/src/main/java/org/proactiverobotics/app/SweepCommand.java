@@ -289,11 +289,12 @@ public final class SweepCommand implements Callable<Integer> {
         List<NoiseLevel> levels = List.copyOf(levelSet);
         List<Long> seedList = seeds == null ? null : parseSeeds(seeds);
         List<WorldSpec> worldSpecs = loadWorlds();
+        boolean anyFleet = worldSpecs.stream().anyMatch(WorldSpec::hasSeveralRobots); // a strategy may then name Yield
         ScenarioPlugins plugins;
         List<Strategy> strategyList = new ArrayList<>();
         try {
             plugins = ScenarioPlugins.load(scenarios, RobotEngine.builtInScenarios());
-            Map<String, Integer> slots = RobotEngine.freshSlots(plugins);
+            Map<String, Integer> slots = RobotEngine.freshSlots(plugins, anyFleet);
             List<String> names = strategies.isEmpty() && strategyFiles.isEmpty() ? List.of(Strategy.SAFETY_FIRST) : strategies;
             Set<String> bundled = new LinkedHashSet<>();
             for (String name : names) {

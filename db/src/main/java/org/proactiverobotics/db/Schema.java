@@ -97,6 +97,7 @@ public final class Schema {
     private static final String[][] ADDED_COLUMNS = {
         {"strategy", "timeout_ms", "BIGINT NOT NULL DEFAULT 0"},
         {"checkpoints", "unreachable", "BOOLEAN NOT NULL DEFAULT FALSE"},
+        {"robot_body", "shared_world", "BOOLEAN NOT NULL DEFAULT FALSE"},
     };
 
     private static boolean hasColumn(Statement statement, String table, String column) {

@@ -8,8 +8,9 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Where an engine process takes each robot's drive profile from: the robot's {@code robot_body} row
- * ({@link RobotBody}), or the engine's {@code --max-speed-mps} / {@code --axle-width-m} when the
+ * Where an engine process takes each robot's body from: the robot's {@code robot_body} row
+ * ({@link RobotBody}), or the engine's {@code --max-speed-mps} / {@code --axle-width-m} (alone in
+ * its world) when the
  * robot wrote none (a robot process of an older version) or the database has no such table yet (a
  * database made before it: one warning, then the options). Thread-safe.
  */
@@ -18,20 +19,20 @@ public final class EngineBodies implements RobotServer.Bodies {
     private static final Logger LOG = LoggerFactory.getLogger(EngineBodies.class);
 
     private final DataSource dataSource;
-    private final DriveProfile fallback;
+    private final RobotBody fallback;
     private final AtomicBoolean tableMissingSaid = new AtomicBoolean();
 
     /**
      * @param dataSource the shared database
-     * @param fallback   the profile of a robot without a row
+     * @param fallback   the profile of a robot without a row (alone in its world)
      */
     public EngineBodies(DataSource dataSource, DriveProfile fallback) {
         this.dataSource = dataSource;
-        this.fallback = fallback;
+        this.fallback = new RobotBody(fallback, false);
     }
 
     @Override
-    public DriveProfile drive(int robotId) throws SQLException {
+    public RobotBody body(int robotId) throws SQLException {
         try {
             return RobotBody.read(dataSource, robotId).orElse(fallback);
         } catch (SQLException e) {
@@ -40,7 +41,7 @@ public final class EngineBodies implements RobotServer.Bodies {
             }
             if (tableMissingSaid.compareAndSet(false, true)) {
                 LOG.warn("robot_body cannot be read ({}): every robot is driven with --max-speed-mps {} and --axle-width-m {}"
-                        + " (run `db init` to add the table)", RobotServer.oneLine(e), fallback.maxSpeedMps(), fallback.axleWidthM());
+                        + " (run `db init` to add the table)", RobotServer.oneLine(e), fallback.drive().maxSpeedMps(), fallback.drive().axleWidthM());
             }
             return fallback;
         }

@@ -259,7 +259,7 @@ public final class FleetProcess {
         for (int attempt = 1; ; attempt++) {
             try {
                 StoredMission.check(pool, lane.robotId, Missions.of(own));
-                RobotProcess.writeBody(pool, lane.robotId, own.robot());
+                RobotProcess.writeBody(pool, lane.robotId, own.robot(), true); // its engine runs Yield, as run's does
                 return true;
             } catch (SQLException e) {
                 DatabaseProblem problem = DatabaseProblem.of(e, options.db().url(), "checkpoints");

@@ -213,11 +213,12 @@ public final class RobotProcess {
      * @param pool    the robot's pool
      * @param robotId the robot
      * @param robot   its world file entry
+     * @param sharedWorld whether other robots share its world
      * @throws SQLException when the database fails otherwise (the caller retries)
      */
-    static void writeBody(HikariDataSource pool, int robotId, WorldSpec.Robot robot) throws SQLException {
+    static void writeBody(HikariDataSource pool, int robotId, WorldSpec.Robot robot, boolean sharedWorld) throws SQLException {
         try {
-            RobotBody.write(pool, robotId, RobotBody.of(robot));
+            RobotBody.write(pool, robotId, RobotBody.of(robot, sharedWorld));
         } catch (SQLException e) {
             if (!EngineBodies.missingOrDenied(e)) {
                 throw e;
@@ -241,7 +242,7 @@ public final class RobotProcess {
         for (int attempt = 1; ; attempt++) {
             try {
                 StoredMission.check(pool, robotId, Missions.of(world));
-                writeBody(pool, robotId, world.robot());
+                writeBody(pool, robotId, world.robot(), false);
                 if (attempt > 1) {
                     LOG.info("robot {}: stored mission read (attempt {})", robotId, attempt);
                 }

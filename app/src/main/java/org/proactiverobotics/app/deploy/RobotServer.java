@@ -10,6 +10,7 @@ import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.engine.CorruptStateException;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.robot.RobotEngine;
+import org.proactiverobotics.engine.robot.Strategy;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -40,34 +41,34 @@ public final class RobotServer {
     /** In a fleet, a robot whose run ended this long ago is dropped, seconds. */
     static final long DROP_AFTER_S = 60;
 
-    /** Builds a robot's engine for a drive profile. */
+    /** Builds a robot's engine for a body: its drive profile, alone in its world or not. */
     @FunctionalInterface
     public interface Engines {
         /**
          * @param robotId the robot
-         * @param drive   the drive profile its engine assumes
+         * @param body    the drive profile its engine assumes, and whether other robots share its world
          * @return the engine
          */
-        RobotEngine build(int robotId, DriveProfile drive);
+        RobotEngine build(int robotId, RobotBody body);
     }
 
-    /** The drive profile a robot's engine must assume as a run is taken up (its {@code robot_body} row, or a fallback). */
+    /** The body a robot's engine must assume as a run is taken up (its {@code robot_body} row, or a fallback). */
     @FunctionalInterface
     public interface Bodies {
         /**
          * @param robotId the robot
-         * @return its drive profile
+         * @return its body
          * @throws SQLException when it cannot be read
          */
-        DriveProfile drive(int robotId) throws SQLException;
+        RobotBody body(int robotId) throws SQLException;
     }
 
     private final int robotId;
     private final Engines engines;
-    /** Where the drive profile comes from at each run taken up; null: the engine's first one throughout. */
+    /** Where the body comes from at each run taken up; null: the engine's first one throughout. */
     private final Bodies bodies;
-    /** The drive profile {@link #side} was built with (null: built without one, by the one-profile constructor). */
-    private DriveProfile sideDrive;
+    /** The body {@link #side} was built with. */
+    private RobotBody sideBody;
     private final EngineClock clock;
     private final EngineLease lease;
     private final EngineLoop.Options options;
@@ -117,7 +118,7 @@ public final class RobotServer {
      */
     public RobotServer(int robotId, IntFunction<RobotEngine> engines, EngineClock clock, EngineLease lease,
                        EngineLoop.Options options, boolean standby, boolean oneOfSeveral) {
-        this(robotId, (robot, drive) -> engines.apply(robot), null, DriveProfile.DEFAULT, clock, lease, options, standby,
+        this(robotId, (robot, body) -> engines.apply(robot), null, DriveProfile.DEFAULT, clock, lease, options, standby,
                 oneOfSeveral);
     }
 
@@ -127,8 +128,8 @@ public final class RobotServer {
      * may differ in size and speed; docs/deployment.md).
      *
      * @param robotId      the robot
-     * @param engines      builds the robot's engine for a drive profile
-     * @param bodies       the robot's drive profile as a run is taken up, or null: {@code drive} throughout
+     * @param engines      builds the robot's engine for a body
+     * @param bodies       the robot's body as a run is taken up, or null: {@code drive}, alone in its world, throughout
      * @param drive        the profile the engine is first built with (before any run is seen)
      * @param clock        the robot's handshake rows
      * @param lease        the robot's lease row, as this engine holds it
@@ -141,7 +142,7 @@ public final class RobotServer {
         this.robotId = robotId;
         this.engines = engines;
         this.bodies = bodies;
-        this.sideDrive = drive;
+        this.sideBody = new RobotBody(drive, false);
         this.clock = clock;
         this.lease = lease;
         this.options = options;
@@ -259,7 +260,7 @@ public final class RobotServer {
             }
             nextTakeNanos = now + TAKE_EVERY_NANOS;
             if (side == null) {
-                side = engines.build(robotId, sideDrive); // built before the lease is taken: a failure here leaves nothing half done
+                side = engines.build(robotId, sideBody); // built before the lease is taken: a failure here leaves nothing half done
             }
             if (!lease.tryTake()) {
                 if (!waitingLogged) {
@@ -390,7 +391,9 @@ public final class RobotServer {
             LOG.info("engine {}: new robot run {} ({} timing): commands and requests of earlier runs cleared, "
                     + "checkpoints not reached, engine started fresh", robotId, robot.runId(), robot.timingLabel());
         }
-        if (side.ensureStrategy(options.strategy())) { // a strategy set with the strategy command survives restarts
+        // among other robots, Yield right below the collision monitor, as run ranks it
+        Strategy strategy = sideBody.sharedWorld() ? options.strategy().forSharedWorld() : options.strategy();
+        if (side.ensureStrategy(strategy)) { // a strategy set with the strategy command survives restarts
             LOG.info("engine {}: strategy {} written", robotId, options.strategy().name());
         } else if (!strategyKeptSaid) { // once: an engine adopts the robot's old run, then its new one
             strategyKeptSaid = true;
@@ -405,18 +408,19 @@ public final class RobotServer {
 
     /**
      * The robot's process wrote its body before it began the run: an engine built for another
-     * profile is built anew (before its state is resumed or started, so nothing of it is lost).
+     * body is built anew (before its state is resumed or started, so nothing of it is lost).
      */
     private void fitBody() throws SQLException {
         if (bodies == null) {
             return;
         }
-        DriveProfile drive = bodies.drive(robotId);
-        if (!drive.equals(sideDrive)) {
-            side = engines.build(robotId, drive);
-            sideDrive = drive;
-            LOG.info("engine {}: robot {} drives at up to {} m/s with {} m between its wheels", robotId, robotId,
-                    String.format(Locale.ROOT, "%.2f", drive.maxSpeedMps()), String.format(Locale.ROOT, "%.3f", drive.axleWidthM()));
+        RobotBody body = bodies.body(robotId);
+        if (!body.equals(sideBody)) {
+            side = engines.build(robotId, body);
+            sideBody = body;
+            LOG.info("engine {}: robot {} drives at up to {} m/s with {} m between its wheels{}", robotId, robotId,
+                    String.format(Locale.ROOT, "%.2f", body.drive().maxSpeedMps()),
+                    String.format(Locale.ROOT, "%.3f", body.drive().axleWidthM()), body.sharedWorld() ? ", among other robots" : "");
         }
     }
 
