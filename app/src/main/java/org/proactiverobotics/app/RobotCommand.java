@@ -98,10 +98,6 @@ public final class RobotCommand implements Callable<Integer> {
             return Main.EXIT_BAD_INPUT;
         }
         String problem = problem();
-        if (problem == null && mcap && worldSpec.hasSeveralRobots()) {
-            problem = "--mcap does not take a world with several robots yet (" + worldSpec.name() + " has "
-                    + worldSpec.robots().size() + "): drop --mcap";
-        }
         if (problem != null) {
             err.println(problem);
             err.flush();
@@ -208,20 +204,35 @@ public final class RobotCommand implements Callable<Integer> {
         MissionReport report;
         FleetProcess fleet = new FleetProcess(new RobotProcess.Options(worldSpec, db, process.robotId(), mode, realTimeFactor,
                 process.logEvery(), process.heartbeat(), noise.level().sensorNoise()), signal);
+        McapRecorder.Fleet recorder = null;
         try {
+            if (mcap) { // one file, each robot's topics under /robot/ID, as run writes it
+                McapRecorder.Fleet opened = McapRecorder.openFleet(outDir.resolve(McapRecorder.FILE_NAME), worldSpec);
+                recorder = opened;
+                fleet.alsoTo(i -> opened.robot(i)::record);
+            }
             report = fleet.run();
+        } catch (IOException e) {
+            err.println("cannot write " + McapRecorder.FILE_NAME + " in " + outDir + ": " + e.getMessage());
+            err.flush();
+            return Main.EXIT_INFRASTRUCTURE;
         } catch (DatabaseWait.Unreachable e) {
+            closeQuietly(recorder, outDir);
             output.removeIfEmpty();
             err.println(e.getMessage());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
         } catch (StoredMission.Mismatch e) {
+            closeQuietly(recorder, outDir);
             output.removeIfEmpty();
             err.println(e.getMessage());
             err.flush();
             return Main.EXIT_BAD_INPUT;
         }
         try {
+            if (recorder != null) {
+                recorder.close();
+            }
             writeWorldReport(report, outDir.resolve("report.json"));
             fleet.writeReplay(outDir.resolve("replay.html"), report);
         } catch (IOException e) {
@@ -261,14 +272,14 @@ public final class RobotCommand implements Callable<Integer> {
     }
 
     /** A mission that never started leaves no run.mcap behind. */
-    private static void closeQuietly(McapRecorder recorder, Path outDir) {
+    private static void closeQuietly(AutoCloseable recorder, Path outDir) {
         if (recorder == null) {
             return;
         }
         try {
             recorder.close();
             Files.deleteIfExists(outDir.resolve(McapRecorder.FILE_NAME));
-        } catch (IOException e) {
+        } catch (Exception e) {
             // nothing was recorded: nothing to report
         }
     }

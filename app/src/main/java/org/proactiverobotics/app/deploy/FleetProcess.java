@@ -11,13 +11,17 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
+import java.util.function.Consumer;
+import java.util.function.IntFunction;
 import org.proactiverobotics.app.Plural;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.ScenarioColours;
 import org.proactiverobotics.app.replay.ReplayData;
 import org.proactiverobotics.app.replay.ReplayPage;
+import org.proactiverobotics.app.replay.ReplayRobot;
 import org.proactiverobotics.app.replay.RobotTracer;
+import org.proactiverobotics.app.replay.TraceStep;
 import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.ScenarioPlugins;
 import org.proactiverobotics.app.mission.Outcome;
@@ -55,8 +59,8 @@ public final class FleetProcess {
 
     private final RobotProcess.Options options;
     private final ShutdownSignal signal;
-    /** What the first robot knew, step by step: replay.html (the page shows one robot for now). */
-    private final ReplayData replay;
+    /** Each robot's steps also go here (run.mcap's recorder), by the robot's position; null: nowhere. */
+    private IntFunction<Consumer<TraceStep>> alsoTo;
 
     /**
      * @param options what to run ({@code robotId} is not used: the ids are the world's)
@@ -68,12 +72,25 @@ public final class FleetProcess {
         }
         this.options = options;
         this.signal = signal;
-        this.replay = new ReplayData(Map.of(), options.world().robots().get(0).robot().sensorAnglesDeg().size());
+        this.lanes = new ArrayList<>();
+        for (int i = 0; i < options.world().robots().size(); i++) {
+            WorldSpec.RobotEntry entry = options.world().robots().get(i);
+            lanes.add(new Lane(i, entry.id(), new ReplayData(Map.of(), entry.robot().sensorAnglesDeg().size())));
+        }
     }
 
     /**
-     * Writes replay.html: what the world's first robot knew, step by step (after {@link #run()}), as
-     * {@code run} writes it for such a world.
+     * @param sinks each robot's steps also go to the sink for its position among the world's robots (run.mcap's recorder)
+     * @return this
+     */
+    public FleetProcess alsoTo(IntFunction<Consumer<TraceStep>> sinks) {
+        this.alsoTo = sinks;
+        return this;
+    }
+
+    /**
+     * Writes replay.html: what each of the world's robots knew, step by step (after {@link #run()}),
+     * every robot drawn as {@code run} draws such a world ({@code #robot=N&iteration=M}).
      *
      * @param file   where
      * @param report the run's report
@@ -81,27 +98,38 @@ public final class FleetProcess {
      */
     public void writeReplay(Path file, MissionReport report) throws IOException {
         WorldSpec world = options.world();
-        String summary = "robot " + world.robots().get(0).id() + " of " + world.robots().size() + ": "
-                + Mission.summary(report) + ", robot process";
-        ReplayPage.write(file, ReplayPage.Source.ROBOT, world.forRobot(0),
-                ScenarioColours.of(RobotEngine.freshSlots(ScenarioPlugins.none())), replay, summary);
+        List<ReplayRobot> shown = new ArrayList<>();
+        for (Lane lane : lanes) {
+            RobotReport mine = report.robots().stream().filter(r -> r.id() == lane.robotId).findFirst().orElseThrow();
+            shown.add(mine.replayRobot(world.robots().get(lane.index), lane.replay));
+        }
+        ReplayPage.writeFleet(file, ReplayPage.Source.ROBOT, world,
+                ScenarioColours.of(RobotEngine.freshSlots(ScenarioPlugins.none(), true)), shown,
+                lanes.size() + " robots: " + Mission.summary(report) + ", robot process");
     }
 
-    /** One robot of the world: its controller and what its part of the report gathers. */
+    /** One robot of the world: its controller and what its part of the report and its replay gather. */
     private static final class Lane {
         final int index;
         final int robotId;
         final Map<String, Long> commandWins = new TreeMap<>();
+        /** What the robot knew, step by step: its part of replay.html. */
+        final ReplayData replay;
+        RobotTracer tracer;
         ProactiveController controller;
         long controlSteps;
         Outcome outcome;
         long endSimTimeMs;
 
-        Lane(int index, int robotId) {
+        Lane(int index, int robotId, ReplayData replay) {
             this.index = index;
             this.robotId = robotId;
+            this.replay = replay;
         }
     }
+
+    /** The world's robots, in the world file's order. */
+    private final List<Lane> lanes;
 
     /**
      * Waits for the database, starts every robot's run, waits for their engines, runs the world to
@@ -113,12 +141,13 @@ public final class FleetProcess {
     public MissionReport run() throws DatabaseWait.Unreachable {
         WorldSpec world = options.world();
         Simulation sim = new Simulation(world, options.noise());
-        RobotTracer tracer = new RobotTracer(sim, replay); // the simulation's first robot
-        List<Lane> lanes = new ArrayList<>();
         int[] ids = new int[world.robots().size()];
-        for (int i = 0; i < ids.length; i++) {
-            ids[i] = world.robots().get(i).id();
-            lanes.add(new Lane(i, ids[i]));
+        for (Lane lane : lanes) {
+            ids[lane.index] = lane.robotId;
+            lane.tracer = new RobotTracer(sim, lane.index, lane.replay);
+            if (alsoTo != null) {
+                lane.tracer.alsoTo(alsoTo.apply(lane.index));
+            }
         }
         if (!DatabaseWait.await(options.db(), "robot_clock", signal::stopRequested)) {
             return report(sim, lanes, null, 0, null);
@@ -136,9 +165,7 @@ public final class FleetProcess {
                             RobotConfig.defaults(lane.robotId));
                     lane.controller.onCommand(c -> {
                         lane.commandWins.merge(c.scenario(), 1L, Long::sum);
-                        if (lane.index == 0) {
-                            tracer.command(c);
-                        }
+                        lane.tracer.command(c);
                     });
                 }
                 // in sync timing each robot's newest command and requests come with the engines' ticks: no reads of their own
@@ -149,7 +176,7 @@ public final class FleetProcess {
                     return report(sim, lanes, lockstep, 0, null);
                 }
                 long start = System.nanoTime();
-                MissionReport.Timing timing = loop(sim, lanes, lockstep, tracer, sync ? 0 : options.realTimeFactor());
+                MissionReport.Timing timing = loop(sim, lanes, lockstep, sync ? 0 : options.realTimeFactor());
                 double wallS = (System.nanoTime() - start) / 1e9;
                 boolean stopped = lanes.stream().anyMatch(l -> l.outcome == null);
                 lockstep.finish(stopped ? RunState.STOPPED : RunState.FINISHED);
@@ -165,9 +192,7 @@ public final class FleetProcess {
     }
 
     /** The loop of {@code run}'s fleet mission, the engines' iterations replaced by the handshake. */
-    private MissionReport.Timing loop(Simulation sim, List<Lane> lanes, WorldLockstep lockstep, RobotTracer tracer,
-                                      double realTimeFactor) {
-        Lane first = lanes.get(0);
+    private MissionReport.Timing loop(Simulation sim, List<Lane> lanes, WorldLockstep lockstep, double realTimeFactor) {
         List<Lane> active = new ArrayList<>(lanes);
         long robotNs = 0;
         long waitNs = 0;
@@ -181,9 +206,8 @@ public final class FleetProcess {
                 lane.controller.sense();
             }
             long t1 = System.nanoTime();
-            boolean firstActive = first.outcome == null;
-            if (firstActive) {
-                tracer.sensed();
+            for (Lane lane : active) {
+                lane.tracer.sensed();
             }
             if (!lockstep.sensed(step + 1, sim.simTimeMs())) {
                 break;
@@ -196,10 +220,8 @@ public final class FleetProcess {
             long t3 = System.nanoTime();
             sim.step();
             long t4 = System.nanoTime();
-            if (firstActive) {
-                tracer.stepped(lockstep.lastTick(0).map(t -> t.iteration()).orElse(step));
-            }
             for (Lane lane : active) {
+                lane.tracer.stepped(lockstep.lastTick(lane.index).map(t -> t.iteration()).orElse(step));
                 lane.controlSteps++;
                 lane.outcome = Outcome.of(sim, lane.index, lane.controller.checkpointUnreachable());
                 if (lane.outcome != null) {

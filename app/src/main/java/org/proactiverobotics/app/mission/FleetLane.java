@@ -110,9 +110,7 @@ final class FleetLane {
      */
     ReplayRobot replayRobot(WorldSpec.RobotEntry entry, MissionReport report) {
         RobotReport mine = report.robots().stream().filter(r -> r.id() == robotId).findFirst().orElseThrow();
-        String line = String.format(Locale.ROOT, "robot %d: %s, checkpoints %d/%d, %s", robotId, mine.reason(),
-                mine.checkpointsReached(), mine.checkpointsTotal(), Plural.of(mine.collisions(), "collision"));
-        return new ReplayRobot(robotId, mine.outcome().name(), line, entry, replay);
+        return mine.replayRobot(entry, replay);
     }
 
     /** @return its part of report.json (call once the run is over) */

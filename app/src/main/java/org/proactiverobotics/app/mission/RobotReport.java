@@ -4,7 +4,11 @@ import java.util.Collections;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
+import org.proactiverobotics.app.Plural;
+import org.proactiverobotics.app.replay.ReplayData;
+import org.proactiverobotics.app.replay.ReplayRobot;
 import org.proactiverobotics.sim2d.GroundTruth;
+import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
  * One robot's part of report.json's {@code robots} in a world with several robots (docs/report.md): how its own
@@ -50,6 +54,17 @@ public record RobotReport(
         Map<String, Long> commandWins,
         long ruleFailures,
         PoseError poseError) {
+
+    /**
+     * @param entry the robot's entry of the world's robots
+     * @param steps its steps
+     * @return the robot as replay.html draws it, with a line on how its mission went
+     */
+    public ReplayRobot replayRobot(WorldSpec.RobotEntry entry, ReplayData steps) {
+        String line = String.format(Locale.ROOT, "robot %d: %s, checkpoints %d/%d, %s", id, reason(),
+                checkpointsReached, checkpointsTotal, Plural.of(collisions, "collision"));
+        return new ReplayRobot(id, outcome.name(), line, entry, steps);
+    }
 
     /**
      * A robot's report, its ground-truth fields read now (rounded as in report.json).

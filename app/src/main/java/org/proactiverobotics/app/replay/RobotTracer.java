@@ -18,6 +18,8 @@ import org.proactiverobotics.sim2d.Simulation;
 public final class RobotTracer {
 
     private final Simulation sim;
+    /** The robot's position among the world's robots. */
+    private final int index;
     private final ReplayData data;
     private final List<TraceEvent> pending = new ArrayList<>();
     private Consumer<TraceStep> alsoTo = step -> { };
@@ -38,17 +40,27 @@ public final class RobotTracer {
     private int collisions;
 
     /**
-     * @param sim  the robot's world
+     * @param sim  the robot's world (its first robot is traced)
      * @param data where the steps go
      */
     public RobotTracer(Simulation sim, ReplayData data) {
+        this(sim, 0, data);
+    }
+
+    /**
+     * @param sim   the robots' world
+     * @param index the traced robot's position among the world's robots
+     * @param data  where the steps go
+     */
+    public RobotTracer(Simulation sim, int index, ReplayData data) {
         this.sim = sim;
+        this.index = index;
         this.data = data;
-        GroundTruth t = sim.groundTruth();
+        GroundTruth t = sim.groundTruth(index);
         checkpoints = t.checkpointsReached();
         recharges = t.recharges();
         collisions = t.collisions();
-        charging = sim.robot().battery().isCharging();
+        charging = sim.robot(index).battery().isCharging();
     }
 
     /** @param sink also receives every step (run.mcap's recorder) */
@@ -64,8 +76,8 @@ public final class RobotTracer {
 
     /** After the robot sensed, before it acts and the world steps: the pose and readings of this step. */
     public void sensed() {
-        GroundTruth t = sim.groundTruth();
-        SimRobot robot = sim.robot();
+        GroundTruth t = sim.groundTruth(index);
+        SimRobot robot = sim.robot(index);
         simTimeMs = sim.simTimeMs();
         x = t.x();
         y = t.y();
@@ -88,7 +100,7 @@ public final class RobotTracer {
      * @param iteration the engine iteration that served this step (as engine_clock said), or the step
      */
     public void stepped(long iteration) {
-        GroundTruth t = sim.groundTruth();
+        GroundTruth t = sim.groundTruth(index);
         boolean chargingBefore = charging;
         while (checkpoints < t.checkpointsReached()) {
             pending.add(TraceEvent.checkpoint(checkpoints++));
@@ -97,7 +109,7 @@ public final class RobotTracer {
             recharges = t.recharges();
             pending.add(TraceEvent.of(TraceEvent.RECHARGE_STARTED));
         }
-        charging = sim.robot().battery().isCharging();
+        charging = sim.robot(index).battery().isCharging();
         if (chargingBefore && !charging) {
             pending.add(TraceEvent.of(TraceEvent.RECHARGE_FINISHED));
         }
@@ -106,7 +118,7 @@ public final class RobotTracer {
             pending.add(TraceEvent.of(TraceEvent.COLLISION));
         }
         TraceStep step = new TraceStep(iteration, simTimeMs, null, scenario, command, null, x, y, heading, gpsX, gpsY, yaw,
-                scan, battery, battery, chargingBefore, sim.robot().leftSpeedMps(), sim.robot().rightSpeedMps(),
+                scan, battery, battery, chargingBefore, sim.robot(index).leftSpeedMps(), sim.robot(index).rightSpeedMps(),
                 List.copyOf(pending));
         data.add(step);
         alsoTo.accept(step);
