@@ -79,6 +79,18 @@ class McapReaderTest extends CommandLineTest {
         Set<String> topics = McapCheck.check(dir.resolve("run.mcap")).channels().stream()
                 .map(McapCheck.ChannelCount::topic).collect(Collectors.toSet());
         assertThat(topics).contains("/world", "/robot/1/tf", "/robot/2/scan", "/robot/5/decision").doesNotContain("/tf");
+
+        // the layout beside it names every robot's topics, and only topics the file has
+        String layout = Files.readString(dir.resolve("foxglove-layout.json"), StandardCharsets.UTF_8);
+        JsonParser.parseString(layout); // valid JSON
+        Matcher topic = Pattern.compile("\"(/[a-z_/0-9]+?)[.\"]").matcher(layout);
+        Set<String> shown = new TreeSet<>();
+        while (topic.find()) {
+            shown.add(topic.group(1));
+        }
+        assertThat(shown).contains("/world", "/robot/1/scan", "/robot/2/pose_estimate", "/robot/5/map", "/robot/1/decision",
+                "/robot/5/battery", "/robot/1/events").noneMatch(t -> t.matches("/(scan|pose|map|decision|battery|events)"));
+        assertThat(topics).containsAll(shown);
     }
 
     @Test

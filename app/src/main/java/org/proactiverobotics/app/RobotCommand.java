@@ -23,6 +23,7 @@ import org.proactiverobotics.app.deploy.RobotProcess;
 import org.proactiverobotics.app.deploy.ServiceLogging;
 import org.proactiverobotics.app.deploy.ShutdownSignal;
 import org.proactiverobotics.app.deploy.StoredMission;
+import org.proactiverobotics.app.foxglove.FleetLayout;
 import org.proactiverobotics.app.foxglove.McapRecorder;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.RobotReport;
@@ -279,6 +280,7 @@ public final class RobotCommand implements Callable<Integer> {
         try {
             recorder.close();
             Files.deleteIfExists(outDir.resolve(McapRecorder.FILE_NAME));
+            Files.deleteIfExists(outDir.resolve(FleetLayout.FILE_NAME));
         } catch (Exception e) {
             // nothing was recorded: nothing to report
         }

@@ -183,6 +183,7 @@ public final class McapRecorder implements AutoCloseable {
      * @throws IOException when the file cannot be written
      */
     public static Fleet openFleet(Path file, WorldSpec world) throws IOException {
+        FleetLayout.write(file.resolveSibling(FleetLayout.FILE_NAME), world); // the shipped layout names one robot's topics
         McapWriter writer = new McapWriter(new BufferedOutputStream(Files.newOutputStream(file), 1 << 16), "", LIBRARY,
                 McapWriter.DEFAULT_CHUNK_SIZE_BYTES);
         try {
