@@ -152,18 +152,8 @@ public final class RobotCommand implements Callable<Integer> {
             err.println("cannot write " + McapRecorder.FILE_NAME + " in " + outDir + ": " + e.getMessage());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
-        } catch (DatabaseWait.Unreachable e) {
-            closeQuietly(recorder, outDir);
-            output.removeIfEmpty();
-            err.println(e.getMessage());
-            err.flush();
-            return Main.EXIT_INFRASTRUCTURE;
-        } catch (StoredMission.Mismatch e) {
-            closeQuietly(recorder, outDir);
-            output.removeIfEmpty();
-            err.println(e.getMessage());
-            err.flush();
-            return Main.EXIT_BAD_INPUT;
+        } catch (DatabaseWait.Unreachable | StoredMission.Mismatch e) {
+            return notRun(e, recorder, output, err);
         }
         try {
             if (recorder != null) {
@@ -217,18 +207,8 @@ public final class RobotCommand implements Callable<Integer> {
             err.println("cannot write " + McapRecorder.FILE_NAME + " in " + outDir + ": " + e.getMessage());
             err.flush();
             return Main.EXIT_INFRASTRUCTURE;
-        } catch (DatabaseWait.Unreachable e) {
-            closeQuietly(recorder, outDir);
-            output.removeIfEmpty();
-            err.println(e.getMessage());
-            err.flush();
-            return Main.EXIT_INFRASTRUCTURE;
-        } catch (StoredMission.Mismatch e) {
-            closeQuietly(recorder, outDir);
-            output.removeIfEmpty();
-            err.println(e.getMessage());
-            err.flush();
-            return Main.EXIT_BAD_INPUT;
+        } catch (DatabaseWait.Unreachable | StoredMission.Mismatch e) {
+            return notRun(e, recorder, output, err);
         }
         try {
             if (recorder != null) {
@@ -270,6 +250,21 @@ public final class RobotCommand implements Callable<Integer> {
             robots.get(i).getAsJsonObject().remove("ruleFailures");
         }
         Files.writeString(file, gson.toJson(json) + "\n", StandardCharsets.UTF_8);
+    }
+
+    /**
+     * The run could not begin: says why, leaves nothing behind.
+     *
+     * @param e        the database did not answer in time, or holds another world's mission
+     * @param recorder run.mcap's recorder, or null
+     * @return the exit code: bad input for another world's mission, else the infrastructure's
+     */
+    private static int notRun(Exception e, AutoCloseable recorder, OutputDirectory output, PrintWriter err) {
+        closeQuietly(recorder, output.path());
+        output.removeIfEmpty();
+        err.println(e.getMessage());
+        err.flush();
+        return e instanceof StoredMission.Mismatch ? Main.EXIT_BAD_INPUT : Main.EXIT_INFRASTRUCTURE;
     }
 
     /** A mission that never started leaves no run.mcap behind. */
