@@ -3,13 +3,11 @@ package org.proactiverobotics.app.deploy;
 import com.zaxxer.hikari.HikariDataSource;
 import java.io.IOException;
 import java.nio.file.Path;
-import java.sql.SQLException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.IntFunction;
@@ -26,10 +24,8 @@ import org.proactiverobotics.engine.robot.RobotEngine;
 import org.proactiverobotics.engine.robot.ScenarioPlugins;
 import org.proactiverobotics.app.mission.Outcome;
 import org.proactiverobotics.app.mission.RobotReport;
-import org.proactiverobotics.db.Backoff;
 import org.proactiverobotics.protocol.RunState;
 import org.proactiverobotics.protocol.Timing;
-import org.proactiverobotics.robot.Missions;
 import org.proactiverobotics.robot.ProactiveController;
 import org.proactiverobotics.robot.RobotConfig;
 import org.proactiverobotics.robot.WorldLockstep;
@@ -157,7 +153,8 @@ public final class FleetProcess {
             try {
                 JdbcRobotLink[] links = new JdbcRobotLink[lanes.size()];
                 for (Lane lane : lanes) {
-                    if (!prepare(pool, lane, world)) {
+                    // its engine runs Yield, as run's does
+                    if (!RobotProcess.checkStoredMission(pool, lane.robotId, world.forRobot(lane.index), true, options, signal)) {
                         return report(sim, lanes, null, 0, null);
                     }
                     links[lane.index] = new JdbcRobotLink(pool);
@@ -266,41 +263,6 @@ public final class FleetProcess {
                     truth.checkpointsTotal(), String.format(Locale.ROOT, "%.1f", truth.batteryPct()),
                     String.format(Locale.ROOT, "%.1f", truth.distanceM()), Plural.of(truth.collisions(), "collision"),
                     lane.outcome == null ? "" : ", " + lane.outcome);
-        }
-    }
-
-    /**
-     * Checks the robot's stored mission against the world (a robot may not take over another world's rows)
-     * and writes its body for its engine, retrying while the database is busy or away.
-     *
-     * @return true once done, false when a stop came first
-     */
-    private boolean prepare(HikariDataSource pool, Lane lane, WorldSpec world) throws DatabaseWait.Unreachable {
-        WorldSpec own = world.forRobot(lane.index);
-        Backoff backoff = new Backoff(100, 2_000, System::nanoTime);
-        for (int attempt = 1; ; attempt++) {
-            try {
-                StoredMission.check(pool, lane.robotId, Missions.of(own));
-                RobotProcess.writeBody(pool, lane.robotId, own.robot(), true); // its engine runs Yield, as run's does
-                return true;
-            } catch (SQLException e) {
-                DatabaseProblem problem = DatabaseProblem.of(e, options.db().url(), "checkpoints");
-                if (!problem.worthWaiting()) {
-                    throw new DatabaseWait.Unreachable(problem, problem.message());
-                }
-                LOG.warn("robot {}: reading the stored mission failed (attempt {}): {}; retrying once the database answers",
-                        lane.robotId, attempt, problem.message());
-                backoff.failed();
-                while (!backoff.ready()) {
-                    if (signal.stopRequested()) {
-                        return false;
-                    }
-                    LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(20));
-                }
-                if (!DatabaseWait.await(options.db(), "checkpoints", signal::stopRequested)) {
-                    return false;
-                }
-            }
         }
     }
 

@@ -114,7 +114,7 @@ public final class RobotProcess {
         try (HikariDataSource pool = RobotPool.open(options.db().url(), options.db().user(), options.db().password());
              JdbcRobotLink link = new JdbcRobotLink(pool);
              ProactiveController robot = new ProactiveController(sim, link, config)) {
-            if (!checkStoredMission(pool, robotId, world)) {
+            if (!checkStoredMission(pool, robotId, world, false, options, signal)) {
                 return report(sim, Outcome.STOPPED, 0, null, Map.of(), 0);
             }
             robot.onCommand(c -> {
@@ -235,14 +235,20 @@ public final class RobotProcess {
      * database is seen to answer again ({@link DatabaseWait}, whose --wait-s bounds only a database
      * that does not answer at all).
      *
+     * Then writes the robot's body for its engine. The robot process of a world with several robots
+     * ({@link FleetProcess}) prepares each of its robots the same way.
+     *
+     * @param world       the robot's own world (for a world with several robots, {@link WorldSpec#forRobot})
+     * @param sharedWorld whether other robots share its world (its engine then runs Yield)
      * @return true once checked, false when a stop came first
      */
-    private boolean checkStoredMission(HikariDataSource pool, int robotId, WorldSpec world) throws DatabaseWait.Unreachable {
+    static boolean checkStoredMission(HikariDataSource pool, int robotId, WorldSpec world, boolean sharedWorld,
+                                      Options options, ShutdownSignal signal) throws DatabaseWait.Unreachable {
         Backoff backoff = new Backoff(100, 2_000, System::nanoTime);
         for (int attempt = 1; ; attempt++) {
             try {
                 StoredMission.check(pool, robotId, Missions.of(world));
-                writeBody(pool, robotId, world.robot(), false);
+                writeBody(pool, robotId, world.robot(), sharedWorld);
                 if (attempt > 1) {
                     LOG.info("robot {}: stored mission read (attempt {})", robotId, attempt);
                 }
