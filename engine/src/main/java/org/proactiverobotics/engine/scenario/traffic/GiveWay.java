@@ -23,7 +23,9 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * hands back to {@link WatchTraffic}. Two robots that meet both give way, and the one with the
  * shorter wait goes first; the other, still waiting, sees it come and backs off again, until it
  * is out of the way. Something that comes again while the robot waits starts the backing again.
- * Symmetry is broken with what each robot knows of itself: its id and its clock.
+ * Symmetry is broken with what each robot knows of itself: its id and its clock. When the battery
+ * scenario calls the robot to its station ({@link BatteryCall}) the wait gives up at once: backing
+ * off and waiting would spend what the way to the station needs.
  */
 public final class GiveWay extends Rule {
 
@@ -106,6 +108,10 @@ public final class GiveWay extends Rule {
     @Override
     protected void actions(RuleContext ctx) {
         long now = pose.simTimeMs();
+        if (BatteryCall.callsNow(ctx)) {
+            done = true; // the battery calls the robot to its station: the wait gives up, its drive goes
+            return;
+        }
         boolean coming = scan != null && Math.abs(scan.simTimeMs() - now) <= WatchTraffic.SAME_MOMENT_MS && oncoming.observe(pose, scan, WatchTraffic.radiusM(ctx));
         if (backUntilMs < 0 || (coming && now >= backUntilMs)) {
             // (again: it came on while the robot waited) between two walls it backs out; in the open it
