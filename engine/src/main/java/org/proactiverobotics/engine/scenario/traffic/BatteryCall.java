@@ -8,8 +8,8 @@ import org.proactiverobotics.engine.Suggestion;
  * this iteration (it starts before Yield, so its suggestion of this iteration is in the
  * CommandArray when Yield's rules run). It suggests only once its own check says a recharge is
  * needed (the next leg and the way back are beyond what is left, or the point of no return), so a
- * wait that holds the robot back then, or a back-off that drives it away, spends battery the
- * robot no longer has to spare: the battery outranks the wait.
+ * back-off that drives it away then spends battery the robot no longer has to spare: the battery
+ * outranks the back-off, and the robot gives way only by stopping (which costs nothing).
  */
 final class BatteryCall {
 
