@@ -95,6 +95,24 @@ public final class CollisionReflex {
     private static final int CAUSE_CELL = 2;
     private static final int CAUSE_FLANK = 3;
     private static final int CAUSE_BACKING = 4;
+    private static final int CAUSE_BEHIND = 5;
+
+    /** Whether a reverse command is vetted too (set for a robot that shares its world; not saved as state that changes). */
+    private boolean vetsReverse;
+
+    /**
+     * Vets reverse commands too, from now on: a command that backs the body, over its braking reach,
+     * toward a hit (the rays' hits of the last {@value #MEMORY_MS} ms, placed where they were: what the
+     * front rays saw before the robot turned or backed, and what rear rays, where the body has them,
+     * see now) or toward a map cell that is occupied or that the rays never saw is replaced by STOP.
+     * Off by default: a lone robot's runs stay as they were.
+     *
+     * @return this reflex
+     */
+    public CollisionReflex vettingReverse() {
+        vetsReverse = true;
+        return this;
+    }
 
     /** @return whether the reflex vetoed the last command it vetted */
     public boolean engaged() {
@@ -159,6 +177,9 @@ public final class CollisionReflex {
         }
         double speed = (wheels[0] + wheels[1]) / 2;
         double turnRate = (wheels[1] - wheels[0]) / profile.axleWidthM();
+        if (speed < -1e-6 && vetsReverse) {
+            return vetReverse(map, xM, yM, yawRad, radiusM, speed, turnRate, profile, c);
+        }
         if (speed <= 1e-6) {
             return null; // turning on the spot or backing off: the rays look ahead only
         }
@@ -239,6 +260,26 @@ public final class CollisionReflex {
     /** @return the side the scan sees more room on, +1 left, -1 right */
     private static int freerSide(DistanceScan s) {
         return s.sum(12 * DEG, 180 * DEG) >= s.sum(-180 * DEG, -12 * DEG) ? +1 : -1;
+    }
+
+    /**
+     * A reverse command: STOP when its arc over the braking reach would bring the body closer than
+     * the margin to a remembered hit, an occupied cell or a cell the rays never saw (backing into what
+     * it cannot see is backing blind), else null (the command goes).
+     */
+    private String vetReverse(OccupancyMap map, double xM, double yM, double yawRad, double radiusM, double speed,
+                              double turnRate, DriveProfile profile, Clearance c) {
+        double reachM = c.imminentM() * Math.min(1.0, -speed / profile.maxSpeedMps()) + SIDE_MARGIN_M;
+        vetoReachM = reachM;
+        turning = 0;
+        vetoes = 0;
+        if (!hitsWithin(map, xM, yM, yawRad, radiusM, speed, turnRate, reachM, true)) {
+            return null;
+        }
+        cause = CAUSE_BEHIND;
+        causeX = foundX;
+        causeY = foundY;
+        return Steering.STOP;
     }
 
     /** One step of backing off straight, or null (and no more backing) when something is behind too. */
@@ -336,6 +377,13 @@ public final class CollisionReflex {
                 return String.format(Locale.ROOT, "%sobstacle %.2f m off the %s flank (rays at 60° to 120°), %s", what, causeX,
                         causeY > 0 ? "left" : "right",
                         flankClosing ? "closing in" : "and the command turns toward it");
+            case CAUSE_BEHIND:
+                double behind = Math.max(0.0, Math.hypot(causeX - vetoX, causeY - vetoY) - vetoRadiusM);
+                double at = Math.toDegrees(Math.atan2(causeY - vetoY, causeX - vetoX) - vetoYaw);
+                at = at - 360.0 * Math.floor((at + 180.0) / 360.0);
+                return String.format(Locale.ROOT, "%sbacking toward %s %.2f m away at %d°, within braking reach %.2f m: stopped",
+                        what, foundCause == CAUSE_HIT ? "an obstacle a ray hit" : "an occupied or unseen map cell", behind,
+                        Math.round(at), vetoReachM);
             case CAUSE_BACKING:
                 return String.format(Locale.ROOT, "%sbacking off %.2f m: the way stayed blocked through %d vetoes in a row",
                         what, BACK_REACH_M, STUCK_VETOES);

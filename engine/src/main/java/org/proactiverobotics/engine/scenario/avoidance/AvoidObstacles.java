@@ -13,6 +13,7 @@ import org.proactiverobotics.engine.motion.ControlPeriod;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.Heading;
@@ -29,7 +30,9 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * wall, and the scenarios that find the way (which plan on the map) drive everywhere else,
  * doorways and corridors included; a strategy that ranks it first lets nothing overrule that.
  * The reach comes from the robot's speed, control period and sensor range ({@link Clearance}).
- * STOP when the distance readings have gone stale.
+ * STOP when the distance readings have gone stale. In a world shared with other robots, or on a
+ * robot with rays that look behind (beyond ±90°), it vets reverse commands too: backing toward
+ * something seen, or into cells never seen, within the braking reach is replaced by STOP.
  */
 public final class AvoidObstacles extends Rule {
 
@@ -87,6 +90,9 @@ public final class AvoidObstacles extends Rule {
             return true;
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
+        if (ctx.findService(SharedWorld.class).isPresent() || looksBehind(scan)) {
+            reflex.vettingReverse();
+        }
         OccupancyMap map = position == null ? null
                 : ctx.findService(KnownMap.class).map(m -> m.current(ctx.iteration(), position.simTimeMs())).orElse(null);
         suggestion = reflex.vet(intended, scan, map, position == null ? 0.0 : position.xM(),
@@ -112,6 +118,16 @@ public final class AvoidObstacles extends Rule {
     @Override
     protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
         ctx.generate(this);
+    }
+
+    /** @return whether a ray of the scan looks behind the robot (beyond ±90° from the heading) */
+    static boolean looksBehind(DistanceScan s) {
+        for (double a : s.anglesRad()) {
+            if (Math.abs(a) > Math.PI / 2 + 1e-6) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

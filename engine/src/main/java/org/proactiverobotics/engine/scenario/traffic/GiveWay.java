@@ -23,7 +23,10 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * hands back to {@link WatchTraffic}. Two robots that meet both give way, and the one with the
  * shorter wait goes first; the other, still waiting, sees it come and backs off again, until it
  * is out of the way. Something that comes again while the robot waits starts the backing again.
- * Symmetry is broken with what each robot knows of itself: its id and its clock.
+ * Symmetry is broken with what each robot knows of itself: its id and its clock. While the battery
+ * scenario calls the robot to its station ({@link BatteryCall}) it does not back off, or stops
+ * backing: the battery drains per metre driven, so a wait stopped costs nothing and a back-off
+ * spends what the way to the station needs.
  */
 public final class GiveWay extends Rule {
 
@@ -106,15 +109,21 @@ public final class GiveWay extends Rule {
     @Override
     protected void actions(RuleContext ctx) {
         long now = pose.simTimeMs();
+        // the battery calls the robot to its station: backing off would spend what the way there needs; it only stops
+        boolean called = BatteryCall.callsNow(ctx);
         boolean coming = scan != null && Math.abs(scan.simTimeMs() - now) <= WatchTraffic.SAME_MOMENT_MS && oncoming.observe(pose, scan, WatchTraffic.radiusM(ctx));
         if (backUntilMs < 0 || (coming && now >= backUntilMs)) {
             // (again: it came on while the robot waited) between two walls it backs out; in the open it
             // only stops, which costs no battery, and the other's route goes round it
             backFromMs = now;
-            backUntilMs = narrow() ? now + BACK_MS : now;
+            backUntilMs = narrow() && !called ? now + BACK_MS : now;
             waitUntilMs = now + waitMs(ctx.robotId());
         }
-        if (now >= backUntilMs && now - backFromMs < BACK_MAX_MS && backUntilMs > backFromMs && narrow()) {
+        if (called && now < backUntilMs) {
+            backUntilMs = now; // called while backing: it stops where it is and waits
+            waitUntilMs = now + waitMs(ctx.robotId());
+        }
+        if (!called && now >= backUntilMs && now - backFromMs < BACK_MAX_MS && backUntilMs > backFromMs && narrow()) {
             backUntilMs = now + 1; // still between two walls: on out of the corridor
         }
         if (now < backUntilMs) {

@@ -18,7 +18,7 @@ import org.proactiverobotics.engine.tables.Station;
  * ({@link Oncoming}) it hands over to {@link GiveWay}; when the robot drives to the recharge
  * station and its rays find the station taken ({@link StationView}) it hands over to
  * {@link WaitForStation}. A robot that charges never gives way (it would leave the station it
- * waited for). Clones itself otherwise.
+ * waited for), nor does one the battery calls to its station ({@link BatteryCall}). Clones itself otherwise.
  */
 public final class WatchTraffic extends Rule {
 
@@ -65,7 +65,10 @@ public final class WatchTraffic extends Rule {
         station = ctx.service(MissionTables.class).rechargeStation().orElse(null);
     }
 
-    /** Condition: not charging, and something comes head-on or the station the robot drives to is taken. */
+    /**
+     * Condition: not charging, and something comes head-on while the battery does not call the robot
+     * to its station ({@link BatteryCall}), or the station the robot drives to is taken.
+     */
     @Override
     protected boolean conditions(RuleContext ctx) {
         boolean coming = oncoming.observe(pose, scan, radiusM(ctx)); // every scan is remembered, whatever follows
@@ -73,8 +76,9 @@ public final class WatchTraffic extends Rule {
         if ((battery != null && battery.charging()) || last.endsWith(" RECHARGE")) {
             return false;
         }
-        giveWay = coming;
-        return coming || (StationView.headingThere(last) && StationView.taken(station, pose, scan, radiusM(ctx)));
+        // the battery calls the robot to its station: it does not give way (others see it come and give way to it)
+        giveWay = coming && !BatteryCall.callsNow(ctx);
+        return giveWay || (StationView.headingThere(last) && StationView.taken(station, pose, scan, radiusM(ctx)));
     }
 
     /** @return the robot's radius, half its axle width, metres */
