@@ -1,6 +1,5 @@
 package org.proactiverobotics.app.generate;
 
-import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -117,7 +116,7 @@ public final class GridPlanner {
         }
         Double known = found.get(key(start, goal));
         if (known == null) {
-            search(start, new int[] {goal});
+            searchAndKeep(start, goal);
             known = found.get(key(start, goal));
         }
         return known;
@@ -125,22 +124,22 @@ public final class GridPlanner {
 
     /**
      * Finds the lengths between these pairs of points on every core, for {@link #distance} to answer at once
-     * afterwards: one search from each point the pairs start from serves all its pairs, and each search reads
-     * only the grid, so the answers are those one core would find.
+     * afterwards, each pair once (a length is the same both ways): each search reads only the grid, so the
+     * answers are those one core would find.
      *
      * @param pairs each {fromX, fromY, toX, toY}, metres
      */
     public void prefetch(List<double[]> pairs) {
-        Map<Integer, List<Integer>> goalsByStart = new LinkedHashMap<>();
+        Map<Long, int[]> asked = new LinkedHashMap<>();
         for (double[] p : pairs) {
             int start = cell(p[0], p[1]);
             int goal = cell(p[2], p[3]);
-            if (start >= 0 && goal >= 0 && free[start] && free[goal] && !found.containsKey(key(start, goal))) {
-                goalsByStart.computeIfAbsent(start, s -> new ArrayList<>()).add(goal);
+            if (start >= 0 && goal >= 0 && free[start] && free[goal] && !found.containsKey(key(start, goal))
+                    && !asked.containsKey(key(goal, start))) {
+                asked.put(key(start, goal), new int[] {start, goal});
             }
         }
-        goalsByStart.entrySet().parallelStream()
-                .forEach(e -> search(e.getKey(), e.getValue().stream().mapToInt(Integer::intValue).toArray()));
+        asked.values().parallelStream().forEach(p -> searchAndKeep(p[0], p[1]));
     }
 
     /**
@@ -214,13 +213,11 @@ public final class GridPlanner {
         }
     }
 
-    /** Searches from one cell to each goal in turn, putting the lengths in {@link #found}. */
-    private void search(int start, int[] goals) {
-        for (int goal : goals) {
-            double metres = search(start, goal);
-            found.put(key(start, goal), metres);
-            found.put(key(goal, start), metres);
-        }
+    /** Searches from one cell to another and keeps the length, both ways, in {@link #found}. */
+    private void searchAndKeep(int start, int goal) {
+        double metres = search(start, goal);
+        found.put(key(start, goal), metres);
+        found.put(key(goal, start), metres);
     }
 
     /**
