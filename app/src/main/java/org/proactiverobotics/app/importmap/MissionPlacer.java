@@ -56,13 +56,8 @@ final class MissionPlacer {
         this.grid = grid;
         this.w = grid.columns();
         this.h = grid.rows();
-        this.free = new boolean[w * h];
+        this.free = grid.freeCells();
         this.queue = new int[w * h];
-        for (int j = 0; j < h; j++) {
-            for (int i = 0; i < w; i++) {
-                free[j * w + i] = grid.free(i, j);
-            }
-        }
     }
 
     /**
@@ -152,30 +147,35 @@ final class MissionPlacer {
     private int flood(boolean[] cells, int[] labels, int seed, int label) {
         int head = 0;
         int tail = 0;
+        int last = w * h;
         queue[tail++] = seed;
         labels[seed] = label;
         while (head < tail) {
             int c = queue[head++];
             int i = c % w;
-            for (int k = 0; k < 4; k++) {
-                int n = neighbour(c, i, k);
-                if (n >= 0 && cells[n] && labels[n] < 0) {
-                    labels[n] = label;
-                    queue[tail++] = n;
-                }
+            // the four neighbours in this order (left, right, below, above): the rooms' cells come out in it
+            int n = c - 1;
+            if (i > 0 && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
+            }
+            n = c + 1;
+            if (i < w - 1 && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
+            }
+            n = c - w;
+            if (n >= 0 && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
+            }
+            n = c + w;
+            if (n < last && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
             }
         }
         return tail;
-    }
-
-    /** @return cell c's k-th neighbour of four (column i), or -1 off the grid */
-    private int neighbour(int c, int i, int k) {
-        return switch (k) {
-            case 0 -> i > 0 ? c - 1 : -1;
-            case 1 -> i < w - 1 ? c + 1 : -1;
-            case 2 -> c >= w ? c - w : -1;
-            default -> c + w < w * h ? c + w : -1;
-        };
     }
 
     /**
@@ -269,18 +269,33 @@ final class MissionPlacer {
                 queue[tail++] = s;
             }
         }
+        int last = w * h;
         while (head < tail) {
             int c = queue[head++];
             if (d[c] >= limit) {
                 continue;
             }
+            int next = d[c] + 1;
             int i = c % w;
-            for (int k = 0; k < 4; k++) {
-                int n = neighbour(c, i, k);
-                if (n >= 0 && onFloor[n] && d[n] < 0) {
-                    d[n] = d[c] + 1;
-                    queue[tail++] = n;
-                }
+            int n = c - 1;
+            if (i > 0 && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + 1;
+            if (i < w - 1 && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c - w;
+            if (n >= 0 && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + w;
+            if (n < last && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
             }
         }
         return d;
@@ -299,15 +314,30 @@ final class MissionPlacer {
         int tail = 0;
         d[source] = 0;
         queue[tail++] = source;
+        int last = w * h;
         while (head < tail) {
             int c = queue[head++];
+            int next = d[c] + 1;
             int i = c % w;
-            for (int k = 0; k < 4; k++) {
-                int n = neighbour(c, i, k);
-                if (n >= 0 && onFloor[n] && (d[n] < 0 || d[c] + 1 < d[n])) {
-                    d[n] = d[c] + 1;
-                    queue[tail++] = n;
-                }
+            int n = c - 1;
+            if (i > 0 && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + 1;
+            if (i < w - 1 && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c - w;
+            if (n >= 0 && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + w;
+            if (n < last && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
             }
         }
     }
