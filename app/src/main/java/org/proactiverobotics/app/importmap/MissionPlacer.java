@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.SplittableRandom;
+import java.util.concurrent.CompletableFuture;
+import java.util.stream.IntStream;
 import org.proactiverobotics.app.generate.GridPlanner;
 
 /**
@@ -68,6 +70,9 @@ final class MissionPlacer {
      */
     Placement place(int checkpoints, long seed) {
         SplittableRandom random = new SplittableRandom(seed);
+        // the steps to the nearest blocked cell, on another core meanwhile: from a cell of the floor, the nearest cell
+        // off the floor is a blocked one (a free cell next to the floor is floor), so they are its steps off the floor
+        CompletableFuture<int[]> clearanceOfFree = CompletableFuture.supplyAsync(() -> clearanceSteps(free));
         int[] component = new int[w * h];
         int floor = largestComponent(free, component);
         if (floor < 0) {
@@ -77,7 +82,7 @@ final class MissionPlacer {
         for (int c = 0; c < onFloor.length; c++) {
             onFloor[c] = component[c] == floor;
         }
-        int[] clearance = clearanceSteps(onFloor);
+        int[] clearance = clearanceOfFree.join();
         int minRoomCells = (int) Math.ceil(MIN_ROOM_M2 / (GridPlanner.CELL_M * GridPlanner.CELL_M));
         List<int[]> rooms = List.of();
         // a floor too narrow for rooms at full depth is tried shallower, down to any free cell
@@ -98,6 +103,7 @@ final class MissionPlacer {
         used[rooms.indexOf(startRoom)] = true;
         List<double[]> points = new ArrayList<>();
         int[] geo = null;
+        int[] everyCell = null;
         for (int k = 0; k < checkpoints; k++) {
             if (geo == null) {
                 geo = geodesic(onFloor, placed.stream().mapToInt(Integer::intValue).toArray(), Integer.MAX_VALUE);
@@ -109,8 +115,11 @@ final class MissionPlacer {
             if (pick >= 0) {
                 used[pick] = true;
                 cells = rooms.get(pick);
-            } else { // no room left: the whole floor, away from walls as the rooms' cells are
-                cells = allCells(rooms);
+            } else { // no room left: the whole floor, away from walls as the rooms' cells are (sorted once)
+                if (everyCell == null) {
+                    everyCell = allCells(rooms);
+                }
+                cells = everyCell;
             }
             int cell = farCell(cells, geo, random);
             if (cell < 0 || geo[cell] <= 0) {
@@ -179,54 +188,31 @@ final class MissionPlacer {
     }
 
     /**
-     * @return each cell's distance in steps (8 neighbours, the chessboard distance) to the nearest cell off the
-     *         floor or off the grid: two raster passes, forward then back, each cell taking its visited neighbours' best
+     * @return each cell's distance in steps (8 neighbours, the chessboard distance) to the nearest cell not among
+     *         {@code cells} or off the grid (0 for those): two raster passes, forward then back, each cell taking its visited neighbours' best
      */
-    private int[] clearanceSteps(boolean[] onFloor) {
-        int[] d = new int[w * h];
+    private int[] clearanceSteps(boolean[] cells) {
+        int[] d = new int[w * h]; // 0 off the floor
         for (int j = 0; j < h; j++) {
             for (int i = 0; i < w; i++) {
                 int c = j * w + i;
-                if (!onFloor[c]) {
-                    d[c] = 0;
+                if (!cells[c]) {
                     continue;
                 }
-                int best = i == 0 || j == 0 || i == w - 1 || j == h - 1 ? 1 : Integer.MAX_VALUE;
-                if (i > 0) {
-                    best = Math.min(best, d[c - 1] + 1);
+                if (i == 0 || j == 0 || i == w - 1 || j == h - 1) {
+                    d[c] = 1; // a cell on the grid's edge: the outside is next to it
+                } else { // the neighbours before it (left, and the row below) are done and finite
+                    d[c] = Math.min(Math.min(d[c - 1], d[c - w - 1]), Math.min(d[c - w], d[c - w + 1])) + 1;
                 }
-                if (j > 0) {
-                    best = Math.min(best, d[c - w] + 1);
-                    if (i > 0) {
-                        best = Math.min(best, d[c - w - 1] + 1);
-                    }
-                    if (i < w - 1) {
-                        best = Math.min(best, d[c - w + 1] + 1);
-                    }
-                }
-                d[c] = best;
             }
         }
-        for (int j = h - 1; j >= 0; j--) {
-            for (int i = w - 1; i >= 0; i--) {
+        // back from the far corner; a cell at 0 or 1 cannot come nearer, nor can the edge's
+        for (int j = h - 2; j >= 1; j--) {
+            for (int i = w - 2; i >= 1; i--) {
                 int c = j * w + i;
-                if (d[c] == 0) {
-                    continue;
+                if (d[c] > 1) {
+                    d[c] = Math.min(d[c], Math.min(Math.min(d[c + 1], d[c + w - 1]), Math.min(d[c + w], d[c + w + 1])) + 1);
                 }
-                int best = d[c];
-                if (i < w - 1) {
-                    best = Math.min(best, d[c + 1] + 1);
-                }
-                if (j < h - 1) {
-                    best = Math.min(best, d[c + w] + 1);
-                    if (i < w - 1) {
-                        best = Math.min(best, d[c + w + 1] + 1);
-                    }
-                    if (i > 0) {
-                        best = Math.min(best, d[c + w - 1] + 1);
-                    }
-                }
-                d[c] = best;
             }
         }
         return d;
@@ -362,12 +348,16 @@ final class MissionPlacer {
     /** @return an unused room among those reaching within 70 % of the farthest, drawn; -1 when every room is used */
     private int farRoom(List<int[]> rooms, boolean[] used, int[] geo, SplittableRandom random) {
         int[] reach = new int[rooms.size()];
+        IntStream.range(0, rooms.size()).parallel().filter(r -> !used[r]).forEach(r -> { // each room on its own
+            int most = 0;
+            for (int c : rooms.get(r)) {
+                most = Math.max(most, geo[c]);
+            }
+            reach[r] = most;
+        });
         int best = 0;
         for (int r = 0; r < rooms.size(); r++) {
             if (!used[r]) {
-                for (int c : rooms.get(r)) {
-                    reach[r] = Math.max(reach[r], geo[c]);
-                }
                 best = Math.max(best, reach[r]);
             }
         }
