@@ -5,6 +5,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
 import java.util.stream.IntStream;
 import org.proactiverobotics.app.generate.GridPlanner;
 
@@ -65,10 +66,13 @@ final class MissionPlacer {
     /**
      * @param checkpoints how many checkpoints, at least 1
      * @param seed        the seed: the same floor, count and seed give the same placement
+     * @param legPlaced   told each leg {fromX, fromY, toX, toY} as soon as both its ends are placed (metres, as in
+     *                    the placement): from the start or the checkpoint before to each checkpoint, and from each
+     *                    checkpoint but the last to the station, so that its search may begin while the rest is placed
      * @return the placement
      * @throws IllegalStateException naming why there is none (no free cell; too little floor)
      */
-    Placement place(int checkpoints, long seed) {
+    Placement place(int checkpoints, long seed, Consumer<double[]> legPlaced) {
         SplittableRandom random = new SplittableRandom(seed);
         // the steps to the nearest blocked cell, on another core meanwhile: from a cell of the floor, the nearest cell
         // off the floor is a blocked one (a free cell next to the floor is floor), so they are its steps off the floor
@@ -126,7 +130,13 @@ final class MissionPlacer {
                 throw new IllegalStateException("too little free floor for " + checkpoints + " checkpoints");
             }
             placed.add(cell);
-            points.add(new double[] {round(grid.x(cell % w)), round(grid.y(cell / w))});
+            double[] point = {round(grid.x(cell % w)), round(grid.y(cell / w))};
+            double[] before = k == 0 ? new double[] {round(grid.x(start % w)), round(grid.y(start / w))} : points.get(k - 1);
+            points.add(point);
+            legPlaced.accept(new double[] {before[0], before[1], point[0], point[1]});
+            if (k < checkpoints - 1) {
+                legPlaced.accept(new double[] {point[0], point[1], round(grid.x(station % w)), round(grid.y(station / w))});
+            }
         }
         return new Placement(round(grid.x(start % w)), round(grid.y(start / w)), heading, points,
                 round(grid.x(station % w)), round(grid.y(station / w)), rooms.size());
