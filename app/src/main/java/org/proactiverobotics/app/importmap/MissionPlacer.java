@@ -77,6 +77,11 @@ final class MissionPlacer {
         // the steps to the nearest blocked cell, on another core meanwhile: from a cell of the floor, the nearest cell
         // off the floor is a blocked one (a free cell next to the floor is floor), so they are its steps off the floor
         CompletableFuture<int[]> clearanceOfFree = CompletableFuture.supplyAsync(() -> clearanceSteps(free));
+        int minRoomCells = (int) Math.ceil(MIN_ROOM_M2 / (GridPlanner.CELL_M * GridPlanner.CELL_M));
+        int fullDepth = steps(ROOM_ERODE_M);
+        // and the deep parts of the free cells there too: those of the floor are its rooms (a part lies in one free part)
+        CompletableFuture<List<int[]>> deepParts = clearanceOfFree.thenApplyAsync(
+                clearance -> deepParts(clearance, fullDepth, minRoomCells, new int[w * h]));
         int[] component = new int[w * h];
         int floor = largestComponent(free, component);
         if (floor < 0) {
@@ -87,11 +92,12 @@ final class MissionPlacer {
             onFloor[c] = component[c] == floor;
         }
         int[] clearance = clearanceOfFree.join();
-        int minRoomCells = (int) Math.ceil(MIN_ROOM_M2 / (GridPlanner.CELL_M * GridPlanner.CELL_M));
         List<int[]> rooms = List.of();
         // a floor too narrow for rooms at full depth is tried shallower, down to any free cell
-        for (int depth : new int[] {steps(ROOM_ERODE_M), steps(ROOM_ERODE_M) / 2, 0}) {
-            rooms = rooms(onFloor, clearance, depth, depth == 0 ? 1 : minRoomCells);
+        for (int depth : new int[] {fullDepth, fullDepth / 2, 0}) {
+            List<int[]> parts = depth == fullDepth ? deepParts.join()
+                    : deepParts(clearance, depth, depth == 0 ? 1 : minRoomCells, queue);
+            rooms = parts.stream().filter(part -> onFloor[part[0]]).toList();
             if (!rooms.isEmpty()) {
                 break;
             }
@@ -152,7 +158,7 @@ final class MissionPlacer {
             if (!cells[c] || component[c] >= 0) {
                 continue;
             }
-            int size = flood(cells, component, c, label);
+            int size = flood(cells, component, c, label, queue);
             if (size > bestSize) {
                 best = label;
                 bestSize = size;
@@ -162,8 +168,8 @@ final class MissionPlacer {
         return best;
     }
 
-    /** Labels the 4-connected set of {@code cells} holding {@code seed}; @return its size */
-    private int flood(boolean[] cells, int[] labels, int seed, int label) {
+    /** Labels the 4-connected set of {@code cells} holding {@code seed}, in {@code queue} in its order; @return its size */
+    private int flood(boolean[] cells, int[] labels, int seed, int label, int[] queue) {
         int head = 0;
         int tail = 0;
         int last = w * h;
@@ -199,7 +205,8 @@ final class MissionPlacer {
 
     /**
      * @return each cell's distance in steps (8 neighbours, the chessboard distance) to the nearest cell not among
-     *         {@code cells} or off the grid (0 for those): two raster passes, forward then back, each cell taking its visited neighbours' best
+     *         {@code cells} or off the grid (0 for those): two raster passes, forward then back, each cell taking
+     *         its visited neighbours' best
      */
     private int[] clearanceSteps(boolean[] cells) {
         int[] d = new int[w * h]; // 0 off the floor
@@ -228,26 +235,31 @@ final class MissionPlacer {
         return d;
     }
 
-    /** @return the rooms: 4-connected sets of floor cells deeper than {@code depth} steps, each of at least {@code minCells} */
-    private List<int[]> rooms(boolean[] onFloor, int[] clearance, int depth, int minCells) {
+    /**
+     * @param clearance each cell's steps to the nearest blocked cell, 0 on blocked cells
+     * @param queue     the floods' queue, a cell long each
+     * @return the 4-connected sets of cells deeper than {@code depth} steps of at least {@code minCells}, each in
+     *         its flood's order, in the order of their first cells
+     */
+    private List<int[]> deepParts(int[] clearance, int depth, int minCells, int[] queue) {
         boolean[] deep = new boolean[w * h];
         for (int c = 0; c < deep.length; c++) {
-            deep[c] = onFloor[c] && clearance[c] > depth;
+            deep[c] = clearance[c] > depth;
         }
         int[] labels = new int[w * h];
         Arrays.fill(labels, -1);
-        List<int[]> rooms = new ArrayList<>();
+        List<int[]> parts = new ArrayList<>();
         int label = 0;
         for (int c = 0; c < deep.length; c++) {
             if (!deep[c] || labels[c] >= 0) {
                 continue;
             }
-            int size = flood(deep, labels, c, label++);
+            int size = flood(deep, labels, c, label++, queue);
             if (size >= minCells) {
-                rooms.add(Arrays.copyOf(queue, size)); // in the flood's order, the same for the same floor
+                parts.add(Arrays.copyOf(queue, size)); // in the flood's order, the same for the same floor
             }
         }
-        return rooms;
+        return parts;
     }
 
     /**
