@@ -51,7 +51,7 @@ final class MissionPlacer {
     private final int w;
     private final int h;
     private final boolean[] free;
-    /** The breadth-first searches' queue, shared: one search at a time. */
+    /** The breadth-first searches' queue on the calling thread, shared: one search at a time (another thread brings its own). */
     private final int[] queue;
 
     /** @param grid the floor's cells, on the robot's inflated footprint */
