@@ -48,7 +48,6 @@ import picocli.CommandLine.Spec;
                 "Exit codes: 0 stopped, 2 bad input, 3 database not usable within --wait-s or saved state unreadable."})
 public final class EngineCommand implements Callable<Integer> {
 
-    private static final Logger LOG = LoggerFactory.getLogger(EngineCommand.class);
     /** The most threads an engine process may be given. */
     private static final int MAX_THREADS = 1000;
     /** A thread per robot, up to this many by default: a thread blocked on a robot's lock costs no processor. */
@@ -182,7 +181,7 @@ public final class EngineCommand implements Callable<Integer> {
                 }
             }
             if (ids.length > 1 || standby.length > 0) {
-                LOG.info("engine {}: serving robots {}{} on {} thread(s), lease {} s", name,
+                log().info("engine {}: serving robots {}{} on {} thread(s), lease {} s", name,
                         robotIds == null ? process.robotId() : robotIds,
                         standby.length > 0 ? " (standby for " + standbyIds + ")" : "", threadCount, leaseS);
             }
@@ -267,5 +266,13 @@ public final class EngineCommand implements Callable<Integer> {
             return "--period-ms must be >= 1: " + periodMs;
         }
         return process.problem();
+    }
+
+    /**
+     * The logger, looked up when first used: a static one would start logback (about 0.2 s) in every command,
+     * since picocli makes an instance of each subcommand to build the command line.
+     */
+    private static Logger log() {
+        return LoggerFactory.getLogger(EngineCommand.class);
     }
 }

@@ -39,7 +39,6 @@ import picocli.CommandLine.Spec;
                 "Exit codes: 0 stopped, 2 bad input (a port in use, an address that is not this machine's), 3 database not usable."})
 public final class WatchCommand implements Callable<Integer> {
 
-    private static final Logger LOG = LoggerFactory.getLogger(WatchCommand.class);
     /** How often the database is read, ms. */
     private static final long POLL_MS = 250;
 
@@ -149,14 +148,14 @@ public final class WatchCommand implements Callable<Integer> {
                             m.poll();
                         }
                         if (failing) {
-                            LOG.info("watch: the database answers again");
+                            log().info("watch: the database answers again");
                             failing = false;
                         }
                         server.status(missions.stream().allMatch(m -> m.data().size() == 0) ? "waiting for the mission" : "");
                     } catch (java.sql.SQLException | RuntimeException e) {
                         String why = DatabaseProblem.of(e, db.url(), "watch").message();
                         if (!failing) {
-                            LOG.warn("watch: reading the database failed, retrying: {}", why);
+                            log().warn("watch: reading the database failed, retrying: {}", why);
                             failing = true;
                         }
                         server.status("database: " + why + " (retrying)");
@@ -169,5 +168,13 @@ public final class WatchCommand implements Callable<Integer> {
             Thread.currentThread().interrupt();
             return 0;
         }
+    }
+
+    /**
+     * The logger, looked up when first used: a static one would start logback (about 0.2 s) in every command,
+     * since picocli makes an instance of each subcommand to build the command line.
+     */
+    private static Logger log() {
+        return LoggerFactory.getLogger(WatchCommand.class);
     }
 }

@@ -1,6 +1,7 @@
 package org.proactiverobotics.app.generate;
 
 import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -16,6 +17,7 @@ public final class GridPlanner {
 
     /** Grid resolution, metres. */
     public static final double CELL_M = 0.05;
+    private static final double SQRT2 = Math.sqrt(2);
 
     private final double originX;
     private final double originY;
@@ -47,11 +49,25 @@ public final class GridPlanner {
             this.rows = (int) Math.ceil(arena.heightM() / CELL_M) + 1;
         }
         this.free = new boolean[size * rows];
-        for (int j = 0; j < rows; j++) {
+        if (arena.isCircle()) {
+            for (int j = 0; j < rows; j++) {
+                for (int i = 0; i < size; i++) {
+                    free[j * size + i] = Math.hypot(originX + i * CELL_M, originY + j * CELL_M) <= arena.radiusM() - body;
+                }
+            }
+        } else {
+            // a rectangle's inside() is its nearest side's distance: far enough from both x sides and both y sides,
+            // the same sums as inside() makes, by column and by row instead of for each of millions of cells
+            boolean[] column = new boolean[size];
             for (int i = 0; i < size; i++) {
                 double x = originX + i * CELL_M;
+                column[i] = x - arena.minX() >= body && arena.maxX() - x >= body;
+            }
+            for (int j = 0; j < rows; j++) {
                 double y = originY + j * CELL_M;
-                free[j * size + i] = arena.isCircle() ? Math.hypot(x, y) <= arena.radiusM() - body : arena.inside(x, y) >= body;
+                if (y - arena.minY() >= body && arena.maxY() - y >= body) {
+                    System.arraycopy(column, 0, free, j * size, size);
+                }
             }
         }
         // each obstacle closes only the cells near it: a floor of thousands of boxes costs their area, not cells x boxes
@@ -96,6 +112,11 @@ public final class GridPlanner {
         return originY + j * CELL_M;
     }
 
+    /** @return a copy of every cell's {@link #free} flag, row by row (cell (i, j) at j * columns() + i) */
+    public boolean[] freeCells() {
+        return free.clone();
+    }
+
     /** @return whether the robot's centre may be at cell (i, j) with its clearance; cells off the grid are not */
     public boolean free(int i, int j) {
         return i >= 0 && j >= 0 && i < size && j < rows && free[j * size + i];
@@ -103,7 +124,8 @@ public final class GridPlanner {
 
     /**
      * @return the length of a shortest free path between two points, metres, or
-     *         {@link Double#POSITIVE_INFINITY} when there is none (either end blocked included)
+     *         {@link Double#POSITIVE_INFINITY} when there is none (either end blocked included); the same
+     *         both ways, to the last bit
      */
     public double distance(double fromX, double fromY, double toX, double toY) {
         int start = cell(fromX, fromY);
@@ -111,23 +133,32 @@ public final class GridPlanner {
         if (start < 0 || goal < 0 || !free[start] || !free[goal]) {
             return Double.POSITIVE_INFINITY;
         }
-        Long key = (long) start * free.length + goal;
-        Double known = found.get(key);
+        Double known = found.get(key(start, goal));
         if (known == null) {
-            known = search(start, goal);
-            found.put(key, known);
+            searchAndKeep(start, goal);
+            known = found.get(key(start, goal));
         }
         return known;
     }
 
     /**
      * Finds the lengths between these pairs of points on every core, for {@link #distance} to answer at once
-     * afterwards: each search reads only the grid, so the answers are those one core would find.
+     * afterwards, each pair once (a length is the same both ways): each search reads only the grid, so the
+     * answers are those one core would find.
      *
      * @param pairs each {fromX, fromY, toX, toY}, metres
      */
     public void prefetch(List<double[]> pairs) {
-        pairs.parallelStream().forEach(p -> distance(p[0], p[1], p[2], p[3]));
+        Map<Long, int[]> asked = new LinkedHashMap<>();
+        for (double[] p : pairs) {
+            int start = cell(p[0], p[1]);
+            int goal = cell(p[2], p[3]);
+            if (start >= 0 && goal >= 0 && free[start] && free[goal] && !found.containsKey(key(start, goal))
+                    && !asked.containsKey(key(goal, start))) {
+                asked.put(key(start, goal), new int[] {start, goal});
+            }
+        }
+        asked.values().parallelStream().forEach(p -> searchAndKeep(p[0], p[1]));
     }
 
     /**
@@ -169,150 +200,187 @@ public final class GridPlanner {
     }
 
     /**
-     * A search's arrays, kept by each thread from search to search: a cell's cost counts only where
-     * its mark is this search's, so that a search on a floor of millions of cells does not first
-     * allocate and fill arrays of its whole area (the profile of {@code import-map} put that first).
+     * A search's arrays, kept by each thread from search to search: a cell's steps count only where its
+     * mark is this search's, so that a search on a floor of millions of cells does not first allocate and
+     * fill arrays of its whole area.
      */
     private static final class Scratch {
         private static final ThreadLocal<Scratch> OF_THREAD = ThreadLocal.withInitial(Scratch::new);
-        double[] g = new double[0];
+        /** Straight and diagonal steps of the shortest way found so far to each cell reached. */
+        int[] straight = new int[0];
+        int[] diagonal = new int[0];
         int[] reached = new int[0];
-        int[] closed = new int[0];
+        /** Marked when a cell's neighbours were looked at with its steps as they are now. */
+        int[] expanded = new int[0];
         int stamp;
-        final CellHeap open = new CellHeap();
+        final CellBuckets open = new CellBuckets();
 
         /** @return this thread's arrays for n cells, with a fresh stamp and an empty open list */
         static Scratch forCells(int n) {
             Scratch s = OF_THREAD.get();
-            if (s.g.length < n || s.stamp == Integer.MAX_VALUE) {
-                s.g = new double[Math.max(n, s.g.length)];
-                s.reached = new int[s.g.length];
-                s.closed = new int[s.g.length];
+            if (s.reached.length < n || s.stamp == Integer.MAX_VALUE) {
+                int length = Math.max(n, s.reached.length);
+                s.straight = new int[length];
+                s.diagonal = new int[length];
+                s.reached = new int[length];
+                s.expanded = new int[length];
                 s.stamp = 0;
             }
             s.stamp++;
-            s.open.size = 0;
+            s.open.clear();
             return s;
         }
     }
 
-    /** A* from cell to cell: the length in metres, or infinity. */
+    /** Searches from one cell to another and keeps the length, both ways, in {@link #found}. */
+    private void searchAndKeep(int start, int goal) {
+        double metres = search(start, goal);
+        found.put(key(start, goal), metres);
+        found.put(key(goal, start), metres);
+    }
+
+    /**
+     * A* from cell to cell with the octile distance as its estimate (the exact length where nothing is in
+     * the way, so the search keeps close to the shortest way). The open cells wait in buckets of
+     * {@link CellBuckets#WIDTH} cell by their estimate instead of a heap, the last in a bucket first; as
+     * a bucket's cells are not in order within it, a cell may be looked at before its shortest way is
+     * known, and is then looked at again when that way is found; the goal's length is final once its
+     * bucket is empty (every way still open is longer). A way's length is kept as its counts of straight
+     * and diagonal steps: a + b√2 for whole a and b is the same number only for the same a and b, so the
+     * shortest way's counts are unique and its length, computed from them, is the same whichever of the
+     * shortest ways the search met, and the same from either end.
+     *
+     * @return the length in metres, or infinity
+     */
     private double search(int start, int goal) {
-        Scratch scratch = Scratch.forCells(size * rows);
-        double[] g = scratch.g;
-        int[] reached = scratch.reached;
-        int[] closed = scratch.closed;
-        int stamp = scratch.stamp;
-        g[start] = 0;
+        Scratch s = Scratch.forCells(size * rows);
+        int[] straight = s.straight;
+        int[] diagonal = s.diagonal;
+        int[] reached = s.reached;
+        int[] expanded = s.expanded;
+        int stamp = s.stamp;
+        straight[start] = 0;
+        diagonal[start] = 0;
         reached[start] = stamp;
         int gx = goal % size;
         int gy = goal / size;
-        CellHeap open = scratch.open;
-        open.add(heuristic(start, gx, gy), start);
-        while (!open.isEmpty()) {
-            int c = open.poll();
-            if (c == goal) {
-                return g[c] * CELL_M;
-            }
-            if (closed[c] == stamp) {
-                continue;
-            }
-            closed[c] = stamp;
-            int cx = c % size;
-            int cy = c / size;
-            for (int dy = -1; dy <= 1; dy++) {
-                for (int dx = -1; dx <= 1; dx++) {
-                    int nx = cx + dx;
-                    int ny = cy + dy;
-                    if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= size || ny >= rows) {
-                        continue;
-                    }
-                    int n = ny * size + nx;
-                    // a diagonal step must not cut a blocked corner
-                    if (!free[n] || closed[n] == stamp || (dx != 0 && dy != 0 && (!free[cy * size + nx] || !free[ny * size + cx]))) {
-                        continue;
-                    }
-                    double step = g[c] + (dx != 0 && dy != 0 ? Math.sqrt(2) : 1);
-                    if (reached[n] != stamp || step < g[n]) { // a cell not reached this search is at infinity
-                        g[n] = step;
-                        reached[n] = stamp;
-                        open.add(step + heuristic(n, gx, gy), n);
+        CellBuckets open = s.open;
+        open.add(CellBuckets.bucket(estimate(start, gx, gy)), start);
+        boolean goalFound = false;
+        for (int bucket = open.first(); open.waiting() > 0; bucket++) {
+            while (open.any(bucket)) {
+                int c = open.take(bucket);
+                if (expanded[c] == stamp) {
+                    continue; // looked at already with the steps it has now: this entry is an older, longer way's
+                }
+                expanded[c] = stamp;
+                if (c == goal) {
+                    goalFound = true;
+                    continue;
+                }
+                int cx = c % size;
+                int cy = c / size;
+                int ca = straight[c];
+                int cb = diagonal[c];
+                for (int dy = -1; dy <= 1; dy++) {
+                    for (int dx = -1; dx <= 1; dx++) {
+                        int nx = cx + dx;
+                        int ny = cy + dy;
+                        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= size || ny >= rows) {
+                            continue;
+                        }
+                        int n = ny * size + nx;
+                        boolean diag = dx != 0 && dy != 0;
+                        // a diagonal step must not cut a blocked corner
+                        if (!free[n] || (diag && (!free[cy * size + nx] || !free[ny * size + cx]))) {
+                            continue;
+                        }
+                        int na = diag ? ca : ca + 1;
+                        int nb = diag ? cb + 1 : cb;
+                        double length = na + nb * SQRT2;
+                        if (reached[n] != stamp || length < straight[n] + diagonal[n] * SQRT2) { // not reached: at infinity
+                            straight[n] = na;
+                            diagonal[n] = nb;
+                            reached[n] = stamp;
+                            expanded[n] = 0; // to be looked at (again) with this way
+                            // never behind the bucket being emptied, whatever the last bit of the sum
+                            open.add(Math.max(bucket, CellBuckets.bucket(length + estimate(n, gx, gy))), n);
+                        }
                     }
                 }
+            }
+            if (goalFound) {
+                return (straight[goal] + diagonal[goal] * SQRT2) * CELL_M;
             }
         }
         return Double.POSITIVE_INFINITY;
     }
 
     /**
-     * The open list: cells by their estimate, lowest first. The binary heap of java.util.PriorityQueue step
-     * for step (the same sift up and down), on arrays: equal estimates leave in the same order, so paths and
-     * their lengths are those the planner always found, without an object a cell.
+     * The open list: cells in buckets by their estimate, {@link #WIDTH} cell wide, used round (a step
+     * raises the estimate by at most 2√2 cells, so the cells waiting lie within {@link #RING} buckets of
+     * the one being emptied); in a bucket, the last added leaves first.
      */
-    private static final class CellHeap {
-        private double[] keys = new double[1024];
-        private int[] cells = new int[1024];
-        private int size;
+    private static final class CellBuckets {
+        /** A bucket's width, cells. */
+        static final double WIDTH = 1.0 / 8;
+        /** Buckets in use at once: a power of two above 2√2 / WIDTH + 1. */
+        private static final int RING = 32;
+        private final int[][] cells = new int[RING][16];
+        private final int[] filled = new int[RING];
+        private int waiting;
+        private int lowest = Integer.MAX_VALUE;
 
-        boolean isEmpty() {
-            return size == 0;
+        /** @return the bucket of an estimate, cells */
+        static int bucket(double estimate) {
+            return (int) (estimate / WIDTH);
         }
 
-        void add(double key, int cell) {
-            if (size == keys.length) {
-                keys = Arrays.copyOf(keys, size * 2);
-                cells = Arrays.copyOf(cells, size * 2);
-            }
-            int k = size++;
-            while (k > 0) {
-                int parent = (k - 1) >>> 1;
-                if (Double.compare(key, keys[parent]) >= 0) {
-                    break;
-                }
-                keys[k] = keys[parent];
-                cells[k] = cells[parent];
-                k = parent;
-            }
-            keys[k] = key;
-            cells[k] = cell;
+        void clear() {
+            Arrays.fill(filled, 0);
+            waiting = 0;
+            lowest = Integer.MAX_VALUE;
         }
 
-        int poll() {
-            int result = cells[0];
-            int n = --size;
-            double key = keys[n];
-            int cell = cells[n];
-            if (n > 0) {
-                int k = 0;
-                int half = n >>> 1;
-                while (k < half) {
-                    int child = (k << 1) + 1;
-                    int right = child + 1;
-                    if (right < n && Double.compare(keys[child], keys[right]) > 0) {
-                        child = right;
-                    }
-                    if (Double.compare(key, keys[child]) <= 0) {
-                        break;
-                    }
-                    keys[k] = keys[child];
-                    cells[k] = cells[child];
-                    k = child;
-                }
-                keys[k] = key;
-                cells[k] = cell;
+        /** @return the lowest bucket anything was added to since {@link #clear} */
+        int first() {
+            return lowest;
+        }
+
+        int waiting() {
+            return waiting;
+        }
+
+        void add(int bucket, int cell) {
+            int b = bucket & (RING - 1);
+            if (filled[b] == cells[b].length) {
+                cells[b] = Arrays.copyOf(cells[b], filled[b] * 2);
             }
-            return result;
+            cells[b][filled[b]++] = cell;
+            waiting++;
+            lowest = Math.min(lowest, bucket);
+        }
+
+        boolean any(int bucket) {
+            return filled[bucket & (RING - 1)] > 0;
+        }
+
+        int take(int bucket) {
+            int b = bucket & (RING - 1);
+            waiting--;
+            return cells[b][--filled[b]];
         }
     }
 
-    /**
-     * The straight-line distance in cells. sqrt(dx² + dy²) of whole numbers equals Math.hypot's result for
-     * every pair up to 4 000 cells (checked one by one), so the searches are those hypot gave, at a fraction of its cost.
-     */
-    private double heuristic(int c, int gx, int gy) {
-        double dx = c % size - gx;
-        double dy = c / size - gy;
-        return Math.sqrt(dx * dx + dy * dy);
+    /** The octile distance in cells: diagonal steps along the shorter side, straight ones for the rest. */
+    private double estimate(int c, int gx, int gy) {
+        int dx = Math.abs(c % size - gx);
+        int dy = Math.abs(c / size - gy);
+        return Math.abs(dx - dy) + Math.min(dx, dy) * SQRT2;
+    }
+
+    private long key(int start, int goal) {
+        return (long) start * free.length + goal;
     }
 
     private int cell(double x, double y) {

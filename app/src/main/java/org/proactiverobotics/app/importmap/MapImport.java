@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.SplittableRandom;
+import java.util.concurrent.CompletableFuture;
 import org.proactiverobotics.app.generate.GridPlanner;
 import org.proactiverobotics.app.generate.Solvability;
 import org.proactiverobotics.app.generate.WorldGenerator;
@@ -73,8 +74,12 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
                 WorldSpec.Battery.DEFAULT);
         GridPlanner planner = new GridPlanner(floor, Solvability.CLEARANCE_M);
         MissionPlacer.Placement p;
+        // every leg and every way back to the station the check will ask for, searched on another core as soon as
+        // both its ends are placed, while the placer goes on
+        List<CompletableFuture<Void>> searches = new ArrayList<>();
         try {
-            p = new MissionPlacer(planner).place(checkpoints, seed);
+            p = new MissionPlacer(planner).place(checkpoints, seed,
+                    leg -> searches.add(CompletableFuture.runAsync(() -> planner.prefetch(List.of(leg)))));
         } catch (IllegalStateException e) {
             throw new MapException(mapFile, String.format(Locale.ROOT, "%s for a robot of radius %s m (its centre keeps"
                     + " %s m from every wall)", e.getMessage(), robotRadiusM, Math.round((robotRadiusM + Solvability.CLEARANCE_M) * 1000) / 1000.0));
@@ -85,19 +90,7 @@ public record MapImport(WorldSpec world, String json, OccupancyGrid grid, Solvab
         long noiseSeed = new SplittableRandom(seed).split().nextLong(1, 1_000_000);
         WorldSpec draft = new WorldSpec(worldName, floor.timeStepMs(), floor.maxSimTimeS(), noiseSeed, arena, start, boxes, cps,
                 floor.checkpointRadiusM(), new WorldSpec.RechargeStation(p.stationX(), p.stationY(), 0.35), WorldSpec.Battery.DEFAULT);
-        // every leg and every way back to the station the check will ask for, found on both cores at once
-        List<double[]> asked = new ArrayList<>();
-        double px = start.x();
-        double py = start.y();
-        for (WorldSpec.Checkpoint c : cps) {
-            asked.add(new double[] {px, py, c.x(), c.y()});
-            if (c != cps.get(cps.size() - 1)) {
-                asked.add(new double[] {c.x(), c.y(), p.stationX(), p.stationY()});
-            }
-            px = c.x();
-            py = c.y();
-        }
-        planner.prefetch(asked);
+        CompletableFuture.allOf(searches.toArray(CompletableFuture[]::new)).join();
         // the tour's length on the planner, then a battery one charge of which lasts it three times over
         double tour = tourM(planner, draft);
         double drive = EXPLORATION * tour;

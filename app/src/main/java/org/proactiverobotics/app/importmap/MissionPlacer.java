@@ -4,6 +4,9 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.SplittableRandom;
+import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
+import java.util.stream.IntStream;
 import org.proactiverobotics.app.generate.GridPlanner;
 
 /**
@@ -48,7 +51,7 @@ final class MissionPlacer {
     private final int w;
     private final int h;
     private final boolean[] free;
-    /** The breadth-first searches' queue, shared: one search at a time. */
+    /** The breadth-first searches' queue on the calling thread, shared: one search at a time (another thread brings its own). */
     private final int[] queue;
 
     /** @param grid the floor's cells, on the robot's inflated footprint */
@@ -56,23 +59,29 @@ final class MissionPlacer {
         this.grid = grid;
         this.w = grid.columns();
         this.h = grid.rows();
-        this.free = new boolean[w * h];
+        this.free = grid.freeCells();
         this.queue = new int[w * h];
-        for (int j = 0; j < h; j++) {
-            for (int i = 0; i < w; i++) {
-                free[j * w + i] = grid.free(i, j);
-            }
-        }
     }
 
     /**
      * @param checkpoints how many checkpoints, at least 1
      * @param seed        the seed: the same floor, count and seed give the same placement
+     * @param legPlaced   told each leg {fromX, fromY, toX, toY} as soon as both its ends are placed (metres, as in
+     *                    the placement): from the start or the checkpoint before to each checkpoint, and from each
+     *                    checkpoint but the last to the station, so that its search may begin while the rest is placed
      * @return the placement
      * @throws IllegalStateException naming why there is none (no free cell; too little floor)
      */
-    Placement place(int checkpoints, long seed) {
+    Placement place(int checkpoints, long seed, Consumer<double[]> legPlaced) {
         SplittableRandom random = new SplittableRandom(seed);
+        // the steps to the nearest blocked cell, on another core meanwhile: from a cell of the floor, the nearest cell
+        // off the floor is a blocked one (a free cell next to the floor is floor), so they are its steps off the floor
+        CompletableFuture<int[]> clearanceOfFree = CompletableFuture.supplyAsync(() -> clearanceSteps(free));
+        int minRoomCells = (int) Math.ceil(MIN_ROOM_M2 / (GridPlanner.CELL_M * GridPlanner.CELL_M));
+        int fullDepth = steps(ROOM_ERODE_M);
+        // and the deep parts of the free cells there too: those of the floor are its rooms (a part lies in one free part)
+        CompletableFuture<List<int[]>> deepParts = clearanceOfFree.thenApplyAsync(
+                clearance -> deepParts(clearance, fullDepth, minRoomCells, new int[w * h]));
         int[] component = new int[w * h];
         int floor = largestComponent(free, component);
         if (floor < 0) {
@@ -82,12 +91,13 @@ final class MissionPlacer {
         for (int c = 0; c < onFloor.length; c++) {
             onFloor[c] = component[c] == floor;
         }
-        int[] clearance = clearanceSteps(onFloor);
-        int minRoomCells = (int) Math.ceil(MIN_ROOM_M2 / (GridPlanner.CELL_M * GridPlanner.CELL_M));
+        int[] clearance = clearanceOfFree.join();
         List<int[]> rooms = List.of();
         // a floor too narrow for rooms at full depth is tried shallower, down to any free cell
-        for (int depth : new int[] {steps(ROOM_ERODE_M), steps(ROOM_ERODE_M) / 2, 0}) {
-            rooms = rooms(onFloor, clearance, depth, depth == 0 ? 1 : minRoomCells);
+        for (int depth : new int[] {fullDepth, fullDepth / 2, 0}) {
+            List<int[]> parts = depth == fullDepth ? deepParts.join()
+                    : deepParts(clearance, depth, depth == 0 ? 1 : minRoomCells, queue);
+            rooms = parts.stream().filter(part -> onFloor[part[0]]).toList();
             if (!rooms.isEmpty()) {
                 break;
             }
@@ -103,6 +113,7 @@ final class MissionPlacer {
         used[rooms.indexOf(startRoom)] = true;
         List<double[]> points = new ArrayList<>();
         int[] geo = null;
+        int[] everyCell = null;
         for (int k = 0; k < checkpoints; k++) {
             if (geo == null) {
                 geo = geodesic(onFloor, placed.stream().mapToInt(Integer::intValue).toArray(), Integer.MAX_VALUE);
@@ -114,15 +125,24 @@ final class MissionPlacer {
             if (pick >= 0) {
                 used[pick] = true;
                 cells = rooms.get(pick);
-            } else { // no room left: the whole floor, away from walls as the rooms' cells are
-                cells = allCells(rooms);
+            } else { // no room left: the whole floor, away from walls as the rooms' cells are (sorted once)
+                if (everyCell == null) {
+                    everyCell = allCells(rooms);
+                }
+                cells = everyCell;
             }
             int cell = farCell(cells, geo, random);
             if (cell < 0 || geo[cell] <= 0) {
                 throw new IllegalStateException("too little free floor for " + checkpoints + " checkpoints");
             }
             placed.add(cell);
-            points.add(new double[] {round(grid.x(cell % w)), round(grid.y(cell / w))});
+            double[] point = {round(grid.x(cell % w)), round(grid.y(cell / w))};
+            double[] before = k == 0 ? new double[] {round(grid.x(start % w)), round(grid.y(start / w))} : points.get(k - 1);
+            points.add(point);
+            legPlaced.accept(new double[] {before[0], before[1], point[0], point[1]});
+            if (k < checkpoints - 1) {
+                legPlaced.accept(new double[] {point[0], point[1], round(grid.x(station % w)), round(grid.y(station / w))});
+            }
         }
         return new Placement(round(grid.x(start % w)), round(grid.y(start / w)), heading, points,
                 round(grid.x(station % w)), round(grid.y(station / w)), rooms.size());
@@ -138,7 +158,7 @@ final class MissionPlacer {
             if (!cells[c] || component[c] >= 0) {
                 continue;
             }
-            int size = flood(cells, component, c, label);
+            int size = flood(cells, component, c, label, queue);
             if (size > bestSize) {
                 best = label;
                 bestSize = size;
@@ -148,110 +168,98 @@ final class MissionPlacer {
         return best;
     }
 
-    /** Labels the 4-connected set of {@code cells} holding {@code seed}; @return its size */
-    private int flood(boolean[] cells, int[] labels, int seed, int label) {
+    /** Labels the 4-connected set of {@code cells} holding {@code seed}, in {@code queue} in its order; @return its size */
+    private int flood(boolean[] cells, int[] labels, int seed, int label, int[] queue) {
         int head = 0;
         int tail = 0;
+        int last = w * h;
         queue[tail++] = seed;
         labels[seed] = label;
         while (head < tail) {
             int c = queue[head++];
             int i = c % w;
-            for (int k = 0; k < 4; k++) {
-                int n = neighbour(c, i, k);
-                if (n >= 0 && cells[n] && labels[n] < 0) {
-                    labels[n] = label;
-                    queue[tail++] = n;
-                }
+            // the four neighbours in this order (left, right, below, above): the rooms' cells come out in it
+            int n = c - 1;
+            if (i > 0 && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
+            }
+            n = c + 1;
+            if (i < w - 1 && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
+            }
+            n = c - w;
+            if (n >= 0 && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
+            }
+            n = c + w;
+            if (n < last && cells[n] && labels[n] < 0) {
+                labels[n] = label;
+                queue[tail++] = n;
             }
         }
         return tail;
     }
 
-    /** @return cell c's k-th neighbour of four (column i), or -1 off the grid */
-    private int neighbour(int c, int i, int k) {
-        return switch (k) {
-            case 0 -> i > 0 ? c - 1 : -1;
-            case 1 -> i < w - 1 ? c + 1 : -1;
-            case 2 -> c >= w ? c - w : -1;
-            default -> c + w < w * h ? c + w : -1;
-        };
-    }
-
     /**
-     * @return each cell's distance in steps (8 neighbours, the chessboard distance) to the nearest cell off the
-     *         floor or off the grid: two raster passes, forward then back, each cell taking its visited neighbours' best
+     * @return each cell's distance in steps (8 neighbours, the chessboard distance) to the nearest cell not among
+     *         {@code cells} or off the grid (0 for those): two raster passes, forward then back, each cell taking
+     *         its visited neighbours' best
      */
-    private int[] clearanceSteps(boolean[] onFloor) {
-        int[] d = new int[w * h];
+    private int[] clearanceSteps(boolean[] cells) {
+        int[] d = new int[w * h]; // 0 off the floor
         for (int j = 0; j < h; j++) {
             for (int i = 0; i < w; i++) {
                 int c = j * w + i;
-                if (!onFloor[c]) {
-                    d[c] = 0;
+                if (!cells[c]) {
                     continue;
                 }
-                int best = i == 0 || j == 0 || i == w - 1 || j == h - 1 ? 1 : Integer.MAX_VALUE;
-                if (i > 0) {
-                    best = Math.min(best, d[c - 1] + 1);
+                if (i == 0 || j == 0 || i == w - 1 || j == h - 1) {
+                    d[c] = 1; // a cell on the grid's edge: the outside is next to it
+                } else { // the neighbours before it (left, and the row below) are done and finite
+                    d[c] = Math.min(Math.min(d[c - 1], d[c - w - 1]), Math.min(d[c - w], d[c - w + 1])) + 1;
                 }
-                if (j > 0) {
-                    best = Math.min(best, d[c - w] + 1);
-                    if (i > 0) {
-                        best = Math.min(best, d[c - w - 1] + 1);
-                    }
-                    if (i < w - 1) {
-                        best = Math.min(best, d[c - w + 1] + 1);
-                    }
-                }
-                d[c] = best;
             }
         }
-        for (int j = h - 1; j >= 0; j--) {
-            for (int i = w - 1; i >= 0; i--) {
+        // back from the far corner; a cell at 0 or 1 cannot come nearer, nor can the edge's
+        for (int j = h - 2; j >= 1; j--) {
+            for (int i = w - 2; i >= 1; i--) {
                 int c = j * w + i;
-                if (d[c] == 0) {
-                    continue;
+                if (d[c] > 1) {
+                    d[c] = Math.min(d[c], Math.min(Math.min(d[c + 1], d[c + w - 1]), Math.min(d[c + w], d[c + w + 1])) + 1);
                 }
-                int best = d[c];
-                if (i < w - 1) {
-                    best = Math.min(best, d[c + 1] + 1);
-                }
-                if (j < h - 1) {
-                    best = Math.min(best, d[c + w] + 1);
-                    if (i < w - 1) {
-                        best = Math.min(best, d[c + w + 1] + 1);
-                    }
-                    if (i > 0) {
-                        best = Math.min(best, d[c + w - 1] + 1);
-                    }
-                }
-                d[c] = best;
             }
         }
         return d;
     }
 
-    /** @return the rooms: 4-connected sets of floor cells deeper than {@code depth} steps, each of at least {@code minCells} */
-    private List<int[]> rooms(boolean[] onFloor, int[] clearance, int depth, int minCells) {
+    /**
+     * @param clearance each cell's steps to the nearest blocked cell, 0 on blocked cells
+     * @param queue     the floods' queue, a cell long each
+     * @return the 4-connected sets of cells deeper than {@code depth} steps of at least {@code minCells}, each in
+     *         its flood's order, in the order of their first cells
+     */
+    private List<int[]> deepParts(int[] clearance, int depth, int minCells, int[] queue) {
         boolean[] deep = new boolean[w * h];
         for (int c = 0; c < deep.length; c++) {
-            deep[c] = onFloor[c] && clearance[c] > depth;
+            deep[c] = clearance[c] > depth;
         }
         int[] labels = new int[w * h];
         Arrays.fill(labels, -1);
-        List<int[]> rooms = new ArrayList<>();
+        List<int[]> parts = new ArrayList<>();
         int label = 0;
         for (int c = 0; c < deep.length; c++) {
             if (!deep[c] || labels[c] >= 0) {
                 continue;
             }
-            int size = flood(deep, labels, c, label++);
+            int size = flood(deep, labels, c, label++, queue);
             if (size >= minCells) {
-                rooms.add(Arrays.copyOf(queue, size)); // in the flood's order, the same for the same floor
+                parts.add(Arrays.copyOf(queue, size)); // in the flood's order, the same for the same floor
             }
         }
-        return rooms;
+        return parts;
     }
 
     /**
@@ -269,18 +277,33 @@ final class MissionPlacer {
                 queue[tail++] = s;
             }
         }
+        int last = w * h;
         while (head < tail) {
             int c = queue[head++];
             if (d[c] >= limit) {
                 continue;
             }
+            int next = d[c] + 1;
             int i = c % w;
-            for (int k = 0; k < 4; k++) {
-                int n = neighbour(c, i, k);
-                if (n >= 0 && onFloor[n] && d[n] < 0) {
-                    d[n] = d[c] + 1;
-                    queue[tail++] = n;
-                }
+            int n = c - 1;
+            if (i > 0 && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + 1;
+            if (i < w - 1 && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c - w;
+            if (n >= 0 && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + w;
+            if (n < last && onFloor[n] && d[n] < 0) {
+                d[n] = next;
+                queue[tail++] = n;
             }
         }
         return d;
@@ -299,15 +322,30 @@ final class MissionPlacer {
         int tail = 0;
         d[source] = 0;
         queue[tail++] = source;
+        int last = w * h;
         while (head < tail) {
             int c = queue[head++];
+            int next = d[c] + 1;
             int i = c % w;
-            for (int k = 0; k < 4; k++) {
-                int n = neighbour(c, i, k);
-                if (n >= 0 && onFloor[n] && (d[n] < 0 || d[c] + 1 < d[n])) {
-                    d[n] = d[c] + 1;
-                    queue[tail++] = n;
-                }
+            int n = c - 1;
+            if (i > 0 && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + 1;
+            if (i < w - 1 && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c - w;
+            if (n >= 0 && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
+            }
+            n = c + w;
+            if (n < last && onFloor[n] && (d[n] < 0 || next < d[n])) {
+                d[n] = next;
+                queue[tail++] = n;
             }
         }
     }
@@ -332,12 +370,16 @@ final class MissionPlacer {
     /** @return an unused room among those reaching within 70 % of the farthest, drawn; -1 when every room is used */
     private int farRoom(List<int[]> rooms, boolean[] used, int[] geo, SplittableRandom random) {
         int[] reach = new int[rooms.size()];
+        IntStream.range(0, rooms.size()).parallel().filter(r -> !used[r]).forEach(r -> { // each room on its own
+            int most = 0;
+            for (int c : rooms.get(r)) {
+                most = Math.max(most, geo[c]);
+            }
+            reach[r] = most;
+        });
         int best = 0;
         for (int r = 0; r < rooms.size(); r++) {
             if (!used[r]) {
-                for (int c : rooms.get(r)) {
-                    reach[r] = Math.max(reach[r], geo[c]);
-                }
                 best = Math.max(best, reach[r]);
             }
         }

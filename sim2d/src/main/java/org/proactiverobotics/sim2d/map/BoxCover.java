@@ -2,6 +2,7 @@ package org.proactiverobotics.sim2d.map;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -60,17 +61,24 @@ public final class BoxCover {
     public static List<Cells> cells(OccupancyGrid grid) {
         int w = grid.columns();
         int h = grid.rows();
+        // the two sweeps share nothing but the grid they read: the column-first one on another core meanwhile
+        CompletableFuture<List<Cells>> byColumns = CompletableFuture.supplyAsync(() -> {
+            boolean[] byColumn = new boolean[w * h];
+            for (int i = 0; i < w; i++) {
+                for (int j = 0; j < h; j++) {
+                    byColumn[i * h + j] = grid.blocked(i, j); // transposed: the same sweep then runs up the columns first
+                }
+            }
+            return greedy(byColumn, h, w);
+        });
         boolean[] byRow = new boolean[w * h];
-        boolean[] byColumn = new boolean[w * h];
         for (int j = 0; j < h; j++) {
             for (int i = 0; i < w; i++) {
-                boolean b = grid.blocked(i, j);
-                byRow[j * w + i] = b;
-                byColumn[i * h + j] = b; // transposed: the same sweep then runs up the columns first
+                byRow[j * w + i] = grid.blocked(i, j);
             }
         }
         List<Cells> rowFirst = greedy(byRow, w, h);
-        List<Cells> columnFirst = greedy(byColumn, h, w);
+        List<Cells> columnFirst = byColumns.join();
         if (columnFirst.size() < rowFirst.size()) {
             return columnFirst.stream().map(r -> new Cells(r.j0(), r.i0(), r.j1(), r.i1())).toList();
         }
