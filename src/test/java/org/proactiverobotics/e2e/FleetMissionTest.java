@@ -103,10 +103,14 @@ class FleetMissionTest {
         List<JsonObject> lines = Files.readAllLines(run.outDir().resolve("trace.jsonl")).stream()
                 .map(l -> JsonParser.parseString(l).getAsJsonObject()).toList();
         assertThat(lines).extracting(l -> l.get("robot").getAsInt()).contains(1, 2, 5).allMatch(id -> id == 1 || id == 2 || id == 5);
-        // A robot's lines stop when its mission ends: robot 1's last line is no later than its end.
+        // A robot that accomplished its mission while others go on steps on, out of their way, until the run ends:
+        // robot 1's lines go past its own end (10.1 s) up to the run's.
+        RobotReport first = report.robots().get(0);
         double lastOfFirst = lines.stream().filter(l -> l.get("robot").getAsInt() == 1)
                 .mapToDouble(l -> l.get("simTimeS").getAsDouble()).max().orElseThrow();
-        assertThat(lastOfFirst).isLessThanOrEqualTo(report.robots().get(0).endSimTimeS());
+        assertThat(first.outcome()).isEqualTo(Outcome.MISSION_ACCOMPLISHED);
+        assertThat(first.endSimTimeS()).isLessThan(report.simTimeS());
+        assertThat(lastOfFirst).isGreaterThan(first.endSimTimeS()).isLessThanOrEqualTo(report.simTimeS());
         String svg = Files.readString(run.outDir().resolve("trajectory.svg"));
         assertThat(svg).contains("robot 1 end", "robot 2 end", "robot 5 end");
         assertThat(run.outDir().resolve("replay.html")).isNotEmptyFile();

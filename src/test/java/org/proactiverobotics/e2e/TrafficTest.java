@@ -1,6 +1,7 @@
 package org.proactiverobotics.e2e;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,6 +13,7 @@ import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionOptions;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.NoiseLevel;
+import org.proactiverobotics.app.mission.RobotReport;
 import org.proactiverobotics.sim2d.WorldSpec;
 
 /**
@@ -84,6 +86,25 @@ class TrafficTest {
                 WorldSpec.Battery.DEFAULT);
     }
 
+    /**
+     * The corridor of {@link #corridor()} with robot 1's last checkpoint in its middle, on robot 2's way: robot 1
+     * starts in the west room and is there at 6.5 s; robot 2 starts in the east room, goes to a checkpoint there
+     * first, then through the corridor to the west room.
+     */
+    static WorldSpec lastCheckpointInTheOthersWay() {
+        double wallH = 1.2;
+        List<WorldSpec.Obstacle> walls = List.of(
+                WorldSpec.Obstacle.box(0.0, 0.3 + wallH / 2, 3.0, wallH, 0.0),
+                WorldSpec.Obstacle.box(0.0, -0.3 - wallH / 2, 3.0, wallH, 0.0));
+        List<WorldSpec.RobotEntry> robots = List.of(
+                new WorldSpec.RobotEntry(1, new WorldSpec.Robot(-2.6, 0.8, 0.0, 0.12, 0.5, 1.0),
+                        List.of(new WorldSpec.Checkpoint(0.0, 0.0))),
+                new WorldSpec.RobotEntry(2, new WorldSpec.Robot(2.6, 0.8, -90.0, 0.12, 0.5, 1.0),
+                        List.of(new WorldSpec.Checkpoint(2.6, -0.9), new WorldSpec.Checkpoint(-2.6, -0.8))));
+        return WorldSpec.fleet("park-corridor", 32, 120.0, 5, WorldSpec.Arena.rectangle(7.0, 3.0, 0.0, 0.0), robots, walls,
+                0.25, List.of(new WorldSpec.RechargeStation(-3.0, -1.2, 0.35)), WorldSpec.Battery.DEFAULT);
+    }
+
     /* Under small noise (measured once): the station world as here; the corridor both accomplish, at 112 and 117 s,
        with a robot–robot contact and three wall contacts each: not yet held. */
 
@@ -107,6 +128,23 @@ class TrafficTest {
         assertThat(report.collisions()).as("wall and robot contacts").isZero();
         assertThat(report.robotCollisions()).isZero();
         assertThat(report.robots()).anySatisfy(r -> assertThat(r.success()).as("robot %d: %s", r.id(), r.reason()).isTrue());
+    }
+
+    /*
+     * Before robots that were done left the way, robot 1 stood in the corridor from 6.5 s on and robot 2, finding no
+     * other way, pushed it along the corridor: one robot-robot contact, robot 2 through at 48 s.
+     */
+    @Test
+    void aRobotThatIsDoneLeavesTheCorridorItsLastCheckpointIsIn() throws Exception {
+        MissionReport report = run(lastCheckpointInTheOthersWay(), NoiseLevel.NONE);
+        assertThat(report.robots()).allSatisfy(r -> assertThat(r.success()).as("robot %d: %s", r.id(), r.reason()).isTrue());
+        assertThat(report.robotCollisions()).isZero();
+        assertThat(report.collisions()).isZero();
+        RobotReport first = report.robots().get(0);
+        // its report keeps the time it reached its checkpoint; it drove on after, back to its start (2.7 m each way)
+        assertThat(first.endSimTimeS()).isLessThan(report.robots().get(1).endSimTimeS());
+        assertThat(first.distanceM()).isGreaterThan(5.0);
+        assertThat(report.simTimeS()).as("the run ends with the last mission").isCloseTo(report.robots().get(1).endSimTimeS(), within(0.05));
     }
 
     @Test

@@ -12,6 +12,7 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.IntFunction;
 import org.proactiverobotics.app.Plural;
+import org.proactiverobotics.app.mission.FleetSteps;
 import org.proactiverobotics.app.mission.Mission;
 import org.proactiverobotics.app.mission.MissionReport;
 import org.proactiverobotics.app.mission.ScenarioColours;
@@ -45,7 +46,8 @@ import org.slf4j.LoggerFactory;
  * sharing the robots by lease). Each step every robot whose mission goes on senses, the world's
  * {@link WorldLockstep} publishes their step and (sync timing) waits until every one of their
  * engines served it, every such robot acts, then the world steps once; a robot whose mission ended
- * stands still, a body the others see. This is {@code run}'s loop for such a world, with the engines
+ * stands still, a body the others see, except one that accomplished it while others go on: it steps on, its
+ * engine taking it out of their way ({@link FleetSteps}). This is {@code run}'s loop for such a world, with the engines
  * in another process: in sync timing the run is {@code run}'s, step for step. At the end, the report
  * from the simulator's ground truth, with every robot's own part.
  */
@@ -116,6 +118,8 @@ public final class FleetProcess {
         long controlSteps;
         Outcome outcome;
         long endSimTimeMs;
+        /** Whether it takes steps ({@link FleetSteps}): its engine is published the end of its run once it does not. */
+        boolean stepping = true;
 
         Lane(int index, int robotId, ReplayData replay) {
             this.index = index;
@@ -167,7 +171,7 @@ public final class FleetProcess {
                 }
                 // in sync timing each robot's newest command and requests come with the engines' ticks: no reads of their own
                 WorldLockstep lockstep = new WorldLockstep(new JdbcWorldClock(pool, ids, sync ? links : null), ids, options.timing(),
-                        signal::stopRequested, i -> lanes.get(i).outcome != null);
+                        signal::stopRequested, i -> !lanes.get(i).stepping);
                 LOG.info("world {}: {} robots ({}), {} timing", world.name(), ids.length, idList(ids), options.timing().label());
                 if (!lockstep.begin()) {
                     return report(sim, lanes, lockstep, 0, null);
@@ -220,15 +224,24 @@ public final class FleetProcess {
             for (Lane lane : active) {
                 lane.tracer.stepped(lockstep.lastTick(lane.index).map(t -> t.iteration()).orElse(step));
                 lane.controlSteps++;
+                if (lane.outcome != null) {
+                    continue; // accomplished, stepping on out of the others' way: its outcome and end time stay
+                }
                 lane.outcome = Outcome.of(sim, lane.index, lane.controller.checkpointUnreachable());
                 if (lane.outcome != null) {
                     lane.endSimTimeMs = sim.simTimeMs();
-                    sim.robot(lane.index).setWheelSpeeds(0.0, 0.0); // done: it stays where it is, a body the others see
+                    if (lane.outcome != Outcome.MISSION_ACCOMPLISHED) {
+                        sim.robot(lane.index).setWheelSpeeds(0.0, 0.0); // over: it stays where it is, a body the others see
+                    }
                     LOG.info("robot {}: {} at {} s simulated", lane.robotId, lane.outcome,
                             String.format(Locale.ROOT, "%.1f", lane.endSimTimeMs / 1000.0));
                 }
             }
-            active.removeIf(l -> l.outcome != null);
+            boolean anyGoesOn = lanes.stream().anyMatch(l -> l.outcome == null);
+            for (Lane lane : active) {
+                lane.stepping = FleetSteps.steps(lane.outcome, anyGoesOn);
+            }
+            active.removeIf(l -> !l.stepping);
             robotNs += (t1 - t0) + (t3 - t2);
             waitNs += t2 - t1;
             physicsNs += t4 - t3;

@@ -22,7 +22,9 @@ import org.proactiverobotics.sim2d.WorldSpec;
 /**
  * One robot of a {@link FleetMission}: its engine, its controller, and what its part of the trace and the report
  * gathers (belief, pose error, command wins, path). Its engine's iteration may run on a worker thread; everything
- * else on the mission's thread. Once its mission is over it takes no further step and its robot stands still.
+ * else on the mission's thread. Once its mission is over it takes no further step and its robot stands still,
+ * except one that accomplished it while others still go on ({@link FleetSteps}): it keeps stepping, its report
+ * keeping the time it reached its last checkpoint.
  */
 final class FleetLane {
 
@@ -86,10 +88,15 @@ final class FleetLane {
             recharges = t.recharges();
             markers.add(new SvgRenderer.Marker(t.x(), t.y(), "robot " + robotId + " recharge " + recharges));
         }
+        if (outcome != null) {
+            return; // accomplished, stepping on out of the others' way: its outcome and end time stay
+        }
         outcome = Outcome.of(sim, index, controller.checkpointUnreachable());
         if (outcome != null) {
             endSimTimeMs = sim.simTimeMs();
-            sim.robot(index).setWheelSpeeds(0.0, 0.0); // done: it stays where it is, a body the others see
+            if (outcome != Outcome.MISSION_ACCOMPLISHED) {
+                sim.robot(index).setWheelSpeeds(0.0, 0.0); // over: it stays where it is, a body the others see
+            }
         }
     }
 

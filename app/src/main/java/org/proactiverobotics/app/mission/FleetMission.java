@@ -42,8 +42,9 @@ import org.proactiverobotics.sim2d.WorldSpec;
  * The headless mission of a world with several robots (docs/world-file.md, "Several robots"), in one process: one simulation, and
  * per robot an engine (its own state, scenarios, strategy and rows under the robot's id) and a controller. Each
  * step every robot whose mission goes on senses, every such engine iterates, every such robot acts, then the world
- * steps once. A robot whose mission is over (accomplished, battery flat, a checkpoint unreachable) stops and stays
- * where it is; the run ends when every robot is done or at the world's time limit.
+ * steps once. A robot whose mission is over (battery flat, a checkpoint unreachable) stops and stays where it is;
+ * one that accomplished it steps on while another's mission goes on, its engine taking it out of the others' way
+ * ({@link FleetSteps}); the run ends when every robot is done or at the world's time limit.
  * <p>
  * Over the database every engine shares one pool and every controller another (N may be 100). The engines may
  * iterate on several threads ({@code threads}): each touches only its own robot's rows and state, and everything
@@ -213,7 +214,8 @@ final class FleetMission {
             for (FleetLane lane : active) {
                 lane.afterStep(sim);
             }
-            active.removeIf(FleetLane::done);
+            boolean anyGoesOn = lanes.stream().anyMatch(l -> !l.done());
+            active.removeIf(l -> !FleetSteps.steps(l.outcome(), anyGoesOn));
             robotNs += (t1 - t0) + (t3 - t2);
             engineNs += t2 - t1;
             physicsNs += t4 - t3;

@@ -95,6 +95,28 @@ class MovingObstaclesTest {
         }
     }
 
+    /** Free rays ahead, then something moves in; the robot turns away for {@code awaySteps}: the hit cell's evidence then. */
+    private static int evidenceOutOfViewAfterItMovedIn(ScenarioKit kit, int awaySteps) {
+        kit.robot().gps(0, 0).headingDeg(0).scan(NOTHING_AHEAD); // the place seen free
+        kit.step(3);
+        kit.robot().scan(SOMETHING_AHEAD); // something there now
+        kit.step(3);
+        kit.robot().headingDeg(180).scan(NOTHING_AHEAD); // the robot looks the other way
+        kit.step(awaySteps);
+        int[] c = hitCell();
+        return stored(kit).evidence(c[0], c[1]);
+    }
+
+    @Test
+    void inASharedWorldWhatMovedInFadesOutOfViewOnceAndIsAWallWhenItIsThereAgain() {
+        try (ScenarioKit kit = ScenarioKit.builder().sharedWorld().builtIn(MappingScenario.NAME).start()) {
+            assertThat(evidenceOutOfViewAfterItMovedIn(kit, 60)).as("a robot that came and, unseen, may have left: faded")
+                    .isZero();
+            // seen free and hit again at the very same cell: a wall whose surface a grazing ray had taken free, not a robot
+            assertThat(evidenceOutOfViewAfterItMovedIn(kit, 60)).as("there again: kept out of view").isPositive();
+        }
+    }
+
     // ------------------------------------------------------------------ routes round a robot in a door
 
     /** A wall at y = 1 with two doors: x 0.9..1.5 (in front of the robot) and x 3.0..3.6. */

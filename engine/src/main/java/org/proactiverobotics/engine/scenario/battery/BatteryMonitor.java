@@ -8,6 +8,7 @@ import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.Route;
 import org.proactiverobotics.engine.navigation.RoutePlanner;
+import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.Checkpoint;
 import org.proactiverobotics.engine.tables.PoseEstimate;
@@ -37,6 +38,8 @@ import org.proactiverobotics.engine.tables.Station;
  * return, so it never oscillates between the station and a leg that asks for more than a full
  * charge.</li>
  * </ul>
+ * Once every checkpoint is reached a lone robot's mission is over; in a world shared with other robots
+ * ({@link SharedWorld}) it drives on, out of the others' way, and the point of no return still holds.
  * The cost of travel is learnt from GPS and battery history.
  */
 public final class BatteryMonitor extends Rule {
@@ -165,7 +168,8 @@ public final class BatteryMonitor extends Rule {
     protected boolean conditions(RuleContext ctx) {
         Checkpoint next = checkpoints.stream().filter(c -> !c.reached()).findFirst().orElse(null);
         if (next == null) {
-            return false;
+            // a robot that is done among others drives back to its start: its way back to the station still counts
+            return ctx.findService(SharedWorld.class).isPresent() && pastNoReturn(ctx);
         }
         if (charged) {
             committedSeq = next.seq();
@@ -201,6 +205,16 @@ public final class BatteryMonitor extends Rule {
         }
         double metres = position.distanceTo(next.xM(), next.yM()) + nextToStationM;
         neededPct = Math.max(backPct, perMetre * detour * metres + RESERVE_PCT);
+        return battery.levelPct() < neededPct;
+    }
+
+    /** Whether the battery is below what driving back to the station needs, once every checkpoint is reached. */
+    private boolean pastNoReturn(RuleContext ctx) {
+        double fullPct = ctx.service(MissionTables.class).rechargeLevelPct().orElse(100.0);
+        if (battery.levelPct() >= fullPct - MoveToRecharge.FULL_TOLERANCE_PCT) {
+            return false;
+        }
+        neededPct = drain.pctPerMetre() * drain.detour() * wayBackM(ctx) + RESERVE_PCT;
         return battery.levelPct() < neededPct;
     }
 

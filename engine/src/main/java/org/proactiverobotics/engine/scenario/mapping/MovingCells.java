@@ -10,9 +10,14 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * While such a cell is in the rays' view, the rays decide (they clear it when they see through
  * it); out of view, it loses one unit of evidence every {@value #DECAY_EVERY} scans, so that a
  * robot seen in a corridor the robot has since left is not a wall there for good (a route round
- * it through space never seen, and then no route at all, was what followed). At most
- * {@value #CAPACITY} cells are followed (the oldest are dropped). Kept in plain fields: saved
- * with the rule that holds it.
+ * it through space never seen, and then no route at all, was what followed). A cell that faded
+ * so once and is hit again after the rays saw it free is a wall, not a robot come back to the very
+ * same cell: it is not followed again. A ray grazing along a wall crosses the cells its surface
+ * lies on and takes them free, the next ray that hits them makes them "moved in", and a wall that
+ * faded each time it was out of view had the robot plan through it, find it, and plan through it
+ * again until the time limit (rooms worlds of four robots). At most {@value #CAPACITY} cells are
+ * followed (the oldest are dropped) and {@value #CAPACITY} faded cells remembered (the first ones).
+ * Kept in plain fields: saved with the rule that holds it.
  */
 final class MovingCells {
 
@@ -28,6 +33,8 @@ final class MovingCells {
     private long[] cells = new long[64];
     private int count;
     private int scans;
+    /** The cells that faded out of view once, sorted: hit again from free, they are walls. */
+    private long[] faded = new long[0];
 
     /**
      * Follows a cell that a ray hit after the rays had seen it free, and the occupied cells within
@@ -45,9 +52,12 @@ final class MovingCells {
         }
     }
 
-    /** Follows a cell that a ray hit after the rays had seen it free. */
+    /** Follows a cell that a ray hit after the rays had seen it free, unless it faded once already (a wall). */
     void add(int i, int j) {
         long key = ((long) i << 32) | (j & 0xffffffffL);
+        if (Arrays.binarySearch(faded, key) >= 0) {
+            return;
+        }
         for (int k = 0; k < count; k++) {
             if (cells[k] == key) {
                 return;
@@ -96,11 +106,28 @@ final class MovingCells {
             boolean inView = Math.hypot(dx, dy) <= reach && bearing >= lo - VIEW_MARGIN_RAD && bearing <= hi + VIEW_MARGIN_RAD;
             if (!inView && map.evidence(i, j) > 0) {
                 map.clear(i, j);
+                if (map.evidence(i, j) == 0) {
+                    remember(cells[k]);
+                }
             }
             if (map.evidence(i, j) > 0) {
                 cells[kept++] = cells[k];
             }
         }
         count = kept;
+    }
+
+    /** Remembers a cell that faded out of view (up to {@value #CAPACITY}), kept sorted for the look-up. */
+    private void remember(long key) {
+        int at = Arrays.binarySearch(faded, key);
+        if (at >= 0 || faded.length == CAPACITY) {
+            return;
+        }
+        int insert = -at - 1;
+        long[] grown = new long[faded.length + 1];
+        System.arraycopy(faded, 0, grown, 0, insert);
+        grown[insert] = key;
+        System.arraycopy(faded, insert, grown, insert + 1, faded.length - insert);
+        faded = grown;
     }
 }

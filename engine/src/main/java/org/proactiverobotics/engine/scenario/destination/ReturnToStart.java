@@ -1,0 +1,165 @@
+package org.proactiverobotics.engine.scenario.destination;
+
+import org.proactiverobotics.engine.Outcome;
+import org.proactiverobotics.engine.Rule;
+import org.proactiverobotics.engine.RuleContext;
+import org.proactiverobotics.engine.SharedMemory;
+import org.proactiverobotics.engine.belief.BeliefObserver;
+import org.proactiverobotics.engine.motion.DriveProfile;
+import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.RouteFollower;
+import org.proactiverobotics.engine.tables.MissionTables;
+import org.proactiverobotics.engine.tables.OccupancyMap;
+import org.proactiverobotics.engine.tables.PoseEstimate;
+import org.proactiverobotics.engine.tables.PoseEstimateTable;
+
+/**
+ * In a world shared with other robots, once every checkpoint is reached: drives back to where the robot started
+ * (its {@code initial_pose}), as a fleet robot returns to its parking place, so that a robot that is done does not
+ * stand on the others' way or checkpoints. It follows a route planned on the map like {@link MoveToCheckpoint}
+ * (the collision monitor and Yield still rank above it, the battery scenario still takes it to charge), then
+ * suggests STOP there; pushed more than {@value #LEAVE_M} m off it (it gave way), it drives back. When no plan
+ * finds a way there for {@value #NO_ROUTE_MS} ms (another robot stands on it, or it is walled in), or the drive
+ * has taken longer than {@link #budgetMs} allows, it gives up for good and stops where it is: no endless
+ * re-planning, no battery spent going nowhere. Clones itself to the run's end; a checkpoint not yet reached (the
+ * mission got a new one) hands back to {@link GetCheckpoint}.
+ */
+public final class ReturnToStart extends Rule {
+
+    /** How long no plan may find a way to the start before the robot stops where it is, simulated ms. */
+    static final long NO_ROUTE_MS = 10_000;
+    /** A parked robot pushed farther than this from its start drives back, metres. */
+    static final double LEAVE_M = 0.3;
+    /** The fixed part of the time the drive back may take, simulated ms. */
+    static final long BUDGET_BASE_MS = 60_000;
+    /** The drive back may take this many times the straight line at top speed, on top of the fixed part. */
+    static final double BUDGET_FACTOR = 4.0;
+
+    private double xM;
+    private double yM;
+    /** The route and its re-planning (saved with the rule). */
+    private RouteFollower route = new RouteFollower();
+    /** The side the robot last turned to, +1 left, -1 right, 0 none. */
+    private int behindSide;
+    /** The simulated time since which no plan has found a route, ms (-1: the last plan found one). */
+    private long noRouteSinceMs = -1;
+    /** Whether the robot stands at its start (it stops there). */
+    private boolean parked;
+    /** Whether it gave up: it stops where it is until the run ends. */
+    private boolean gaveUp;
+    /** How long it drove for this rule so far, and may, simulated ms (-1: not set out yet). */
+    private long drivenMs;
+    private long budgetMs = -1;
+    /** The simulated time of the last iteration, ms (-1: none yet). */
+    private long lastMs = -1;
+
+    private transient PoseEstimate position;
+    private transient boolean newCheckpoint;
+
+    private ReturnToStart() {
+    }
+
+    /**
+     * @param xM the start's x, metres
+     * @param yM the start's y, metres
+     */
+    public ReturnToStart(double xM, double yM) {
+        this.xM = xM;
+        this.yM = yM;
+    }
+
+    @Override
+    public String scenario() {
+        return ReachDestinationScenario.NAME;
+    }
+
+    @Override
+    protected void acquireGuardData(RuleContext ctx) {
+        position = ctx.service(PoseEstimateTable.class).newestPose().orElse(null);
+        newCheckpoint = ctx.service(MissionTables.class).checkpoints().stream().anyMatch(c -> !c.reached());
+    }
+
+    /** Guard: the robot's pose is known, and no checkpoint waits (else GetCheckpoint takes over). */
+    @Override
+    protected boolean activationGuards(RuleContext ctx) {
+        return !newCheckpoint && position != null && position.knowsHeading();
+    }
+
+    @Override
+    protected boolean conditions(RuleContext ctx) {
+        return true;
+    }
+
+    @Override
+    protected void actions(RuleContext ctx) {
+        long now = position.simTimeMs();
+        boolean driving = RouteFollower.droveFor(ctx.memory().values().get(SharedMemory.LAST_DECISION), scenario());
+        if (driving && lastMs >= 0) {
+            drivenMs += now - lastMs;
+        }
+        lastMs = now;
+        if (gaveUp) {
+            ctx.suggest(Steering.STOP);
+            return;
+        }
+        DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
+        double radiusM = profile.axleWidthM() / 2;
+        double awayM = position.distanceTo(xM, yM);
+        if (awayM < radiusM / 2 || parked && awayM < LEAVE_M) {
+            if (!parked) {
+                parked = true;
+                route = new RouteFollower();
+                noRouteSinceMs = -1;
+            }
+            ctx.suggest(Steering.STOP);
+            return;
+        }
+        if (parked || budgetMs < 0) { // setting out, first or again
+            parked = false;
+            budgetMs = drivenMs + BUDGET_BASE_MS + (long) (BUDGET_FACTOR * 1000 * awayM / profile.maxSpeedMps());
+        }
+        BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
+        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), now);
+        RouteFollower.Status status = route.step(map, position.xM(), position.yM(), position.yawRad(), xM, yM,
+                radiusM / 2 * 0.9, radiusM, now, driving);
+        if (belief != null && route.planned()) {
+            belief.route(ctx.iteration(), scenario(), route.waypointsX(), route.waypointsY());
+        }
+        if (status == RouteFollower.Status.NO_ROUTE) {
+            if (noRouteSinceMs < 0) {
+                noRouteSinceMs = now;
+            }
+            gaveUp = now - noRouteSinceMs >= NO_ROUTE_MS;
+            ctx.suggest(Steering.STOP);
+            return;
+        }
+        noRouteSinceMs = -1;
+        if (drivenMs > budgetMs) {
+            gaveUp = true; // a start it cannot get to: it stays out of the way where it is rather than roam
+            ctx.suggest(Steering.STOP);
+            return;
+        }
+        if (status == RouteFollower.Status.BACK_OFF) {
+            ctx.suggest(RouteFollower.backOffCommand(profile));
+            return;
+        }
+        behindSide = Steering.turnSide(position.xM(), position.yM(), position.yawRad(), route.targetX(), route.targetY(), behindSide);
+        ctx.suggest(Steering.goTo(position.xM(), position.yM(), position.yawRad(), route.targetX(), route.targetY(), profile, behindSide));
+    }
+
+    /** @return whether the robot stands at its start */
+    public boolean parked() {
+        return parked;
+    }
+
+    /** @return whether it gave up getting there and stays where it is */
+    public boolean gaveUp() {
+        return gaveUp;
+    }
+
+    @Override
+    protected void rulesGeneration(RuleContext ctx, Outcome outcome) {
+        ctx.generate(newCheckpoint ? new GetCheckpoint() : this);
+    }
+}
