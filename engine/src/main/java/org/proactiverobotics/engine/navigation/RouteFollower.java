@@ -508,19 +508,38 @@ public final class RouteFollower {
         double checked = 0;
         double step = OccupancyMap.CELL_M / 2;
         double[] legs = legs();
+        double keepM = bodyRadiusM + RoutePlanner.BODY_MARGIN_M;
         for (int k = nearest; k < xs.length - 1 && checked < CHECK_AHEAD_M; k++) {
             double len = legs[k];
             int n = Math.max(1, (int) Math.ceil(len / step));
+            boolean walls = true;
             for (int q = 0; q <= n; q++) {
                 double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
                 double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
-                if (beyond(px - x, py - y, RoutePlanner.START_CLEAR_M) && map.occupiedWithin(px, py, bodyRadiusM + RoutePlanner.BODY_MARGIN_M)) {
+                if (q % PIECE == 0) {
+                    // a piece of the leg with no occupied cell near it needs no look at each point
+                    int last = Math.min(n, q + PIECE - 1);
+                    walls = occupiedNear(map, px, py, xs[k] + (xs[k + 1] - xs[k]) * last / n, ys[k] + (ys[k + 1] - ys[k]) * last / n, keepM);
+                }
+                if (walls && beyond(px - x, py - y, RoutePlanner.START_CLEAR_M) && map.occupiedWithin(px, py, keepM)) {
                     return true;
                 }
             }
             checked += len;
         }
         return false;
+    }
+
+    /** Points along a line are checked in pieces of this many: a piece with no occupied cell near it is passed at once. */
+    private static final int PIECE = 16;
+
+    /**
+     * @return whether the map may hold an occupied cell within {@code radiusM} of a point between
+     *         two points of a line (the box round both); false: none within that of any point between
+     */
+    private static boolean occupiedNear(OccupancyMap map, double ax, double ay, double bx, double by, double radiusM) {
+        return map.occupiedChunkIn(Math.min(ax, bx) - radiusM, Math.min(ay, by) - radiusM, Math.max(ax, bx) + radiusM,
+                Math.max(ay, by) + radiusM);
     }
 
     /**
@@ -536,13 +555,19 @@ public final class RouteFollower {
     static boolean inSight(OccupancyMap map, double x0, double y0, double x1, double y1, double clearM, boolean seenOnly) {
         double len = Math.hypot(x1 - x0, y1 - y0);
         int n = (int) Math.ceil(len / (OccupancyMap.CELL_M / 2));
+        boolean walls = true;
         for (int k = 1; k <= n; k++) {
             double t = (double) k / n;
             double px = x0 + t * (x1 - x0);
             double py = y0 + t * (y1 - y0);
-            if (t * len < RoutePlanner.START_CLEAR_M
+            if ((k - 1) % PIECE == 0) {
+                // a piece of the line with no occupied cell near it needs no look at each point (on a floor the goal is far)
+                double tb = (double) Math.min(n, k + PIECE - 1) / n;
+                walls = occupiedNear(map, px, py, x0 + tb * (x1 - x0), y0 + tb * (y1 - y0), clearM);
+            }
+            if (walls && (t * len < RoutePlanner.START_CLEAR_M
                     ? map.occupiedApproached(x0, y0, px, py, clearM - NEAR_SLACK_M)
-                    : map.occupiedWithin(px, py, clearM)) {
+                    : map.occupiedWithin(px, py, clearM))) {
                 return false;
             }
             if (seenOnly && map.get(OccupancyMap.cell(px), OccupancyMap.cell(py)) == OccupancyMap.UNKNOWN) {

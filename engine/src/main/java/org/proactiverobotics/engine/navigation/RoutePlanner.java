@@ -65,7 +65,11 @@ public final class RoutePlanner {
         /** A cell's state worked out once per plan: -1 blocked, else its extra cost ({@link Grid#extra}). */
         int[] info = new int[0];
         int stamp;
+        /** The open cells' keys (f, then on a large area the heuristic, else the cell) and, at the same places, the cells. */
         long[] heap = new long[1024];
+        int[] heapCell = new int[1024];
+        /** On a large area, the open cells whose f equals the cell being expanded's, newest on top. */
+        int[] level = new int[1024];
 
         /**
          * @return a cell's state (column a, row b of the area, index k): -1 when blocked, else its extra
@@ -207,6 +211,12 @@ public final class RoutePlanner {
         }
     }
 
+    /**
+     * The heuristic's weight in a plan whose length need only bound the way from above (the
+     * battery's way back): its route is at most this many times the shortest.
+     */
+    static final double BOUND_WEIGHT = 1.5;
+
     private RoutePlanner() {
     }
 
@@ -236,8 +246,14 @@ public final class RoutePlanner {
      */
     public static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM,
                              ClosedPlaces closed) {
-        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false, closed);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, false, closed);
+        return plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed, false);
+    }
+
+    /** As the public plan; {@code weighted}: with the heuristic weighted by {@value #BOUND_WEIGHT} on a large area. */
+    private static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM, double robotRadiusM,
+                              ClosedPlaces closed, boolean weighted) {
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, false, closed, weighted);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, false, closed, weighted);
     }
 
     /**
@@ -250,16 +266,16 @@ public final class RoutePlanner {
      */
     public static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
                                      double robotRadiusM) {
-        return planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null);
+        return planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null, false);
     }
 
     private static Route planOverSeen(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
-                                      double robotRadiusM, ClosedPlaces closed) {
+                                      double robotRadiusM, ClosedPlaces closed, boolean weighted) {
         if (!seenNear(map, gx, gy, goalReachM)) {
             return null; // no search: a failed one covers every seen cell (the profile put it at 40 % of a mission)
         }
-        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true, closed);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true, closed);
+        Route route = plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, 0.0, true, closed, weighted);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, TIGHT_SLACK_M, true, closed, weighted);
     }
 
     /**
@@ -281,8 +297,37 @@ public final class RoutePlanner {
      */
     public static Route planSeenFirst(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
                                       double robotRadiusM, ClosedPlaces closed) {
-        Route route = planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed);
-        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed);
+        return planSeenFirst(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed, false);
+    }
+
+    private static Route planSeenFirst(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                       double robotRadiusM, ClosedPlaces closed, boolean weighted) {
+        Route route = planOverSeen(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed, weighted);
+        return route != null ? route : plan(map, sx, sy, gx, gy, goalReachM, robotRadiusM, closed, weighted);
+    }
+
+    /**
+     * As {@link #planSeenFirst(OccupancyMap, double, double, double, double, double, double)}, for a
+     * way whose length need only bound it from above and is known to be at most {@code boundM} (the
+     * battery's way back: its last plan plus what was driven since): on a large area (at least
+     * {@value #LARGE_CELLS} cells) the search's heuristic is first weighted by {@value #BOUND_WEIGHT},
+     * and its route is taken when it is no longer than {@code boundM}; else, and on a smaller area,
+     * the shortest route. A shortest-route search across a floor opens every cell as promising as
+     * the way round the walls (JFR: 133 000 cells a plan on a 100 m by 100 m floor, most of a step's
+     * time); the weighted one heads for the goal and opens a tenth of them.
+     *
+     * @param boundM what the way is known to be at most, metres
+     * @return the route, or null when neither plan finds one
+     */
+    public static Route planSeenFirstBounded(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                                             double robotRadiusM, double boundM) {
+        if (largeArea(map, sx, sy, gx, gy)) {
+            Route weighted = planSeenFirst(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null, true);
+            if (weighted != null && weighted.lengthM() <= boundM) {
+                return weighted;
+            }
+        }
+        return planSeenFirst(map, sx, sy, gx, gy, goalReachM, robotRadiusM, null, false);
     }
 
     /** Whether a cell whose centre lies within {@code reachM} of a point (or the point's own cell) has been seen. */
@@ -302,10 +347,9 @@ public final class RoutePlanner {
         return false;
     }
 
-    private static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
-                              double robotRadiusM, double slackM, boolean seenOnly, ClosedPlaces closed) {
-        double c = OccupancyMap.CELL_M;
-        int margin = (int) Math.ceil(MARGIN_M / c);
+    /** @return a plan's area: the known map, the start and the goal, with {@value #MARGIN_M} m around */
+    private static Grid area(OccupancyMap map, double sx, double sy, double gx, double gy) {
+        int margin = (int) Math.ceil(MARGIN_M / OccupancyMap.CELL_M);
         int si = OccupancyMap.cell(sx);
         int sj = OccupancyMap.cell(sy);
         int gi = OccupancyMap.cell(gx);
@@ -320,7 +364,24 @@ public final class RoutePlanner {
             hi_i = Math.max(hi_i, map.maxCellExclusive(true) - 1);
             hi_j = Math.max(hi_j, map.maxCellExclusive(false) - 1);
         }
-        Grid g = new Grid(lo_i - margin, lo_j - margin, hi_i - lo_i + 1 + 2 * margin, hi_j - lo_j + 1 + 2 * margin);
+        return new Grid(lo_i - margin, lo_j - margin, hi_i - lo_i + 1 + 2 * margin, hi_j - lo_j + 1 + 2 * margin);
+    }
+
+    /** @return whether a plan between two points covers a large area (at least {@value #LARGE_CELLS} cells) */
+    private static boolean largeArea(OccupancyMap map, double sx, double sy, double gx, double gy) {
+        Grid g = area(map, sx, sy, gx, gy);
+        return (long) g.w * g.h >= LARGE_CELLS;
+    }
+
+    private static Route plan(OccupancyMap map, double sx, double sy, double gx, double gy, double goalReachM,
+                              double robotRadiusM, double slackM, boolean seenOnly, ClosedPlaces closed, boolean weighted) {
+        double c = OccupancyMap.CELL_M;
+        int margin = (int) Math.ceil(MARGIN_M / c);
+        int si = OccupancyMap.cell(sx);
+        int sj = OccupancyMap.cell(sy);
+        int gi = OccupancyMap.cell(gx);
+        int gj = OccupancyMap.cell(gy);
+        Grid g = area(map, sx, sy, gx, gy);
         g.sightClearanceM = robotRadiusM + SIGHT_MARGIN_M; // a tight route keeps its cells where they are tight
         int w = g.w;
         int h = g.h;
@@ -351,6 +412,8 @@ public final class RoutePlanner {
             markClosed(g, closed);
         }
         boolean[] inClosed = g.inClosed;
+        // a weighted heuristic, on a large area only: each cell's estimate of the way on, tenths of a cell's step
+        double weight = weighted && (long) n >= LARGE_CELLS ? BOUND_WEIGHT : 1.0;
 
         // A* over 8 neighbours, steps 10 and 14, no corner cutting; any cell near enough to the goal ends it.
         int start = (sj - g.j0) * w + (si - g.i0);
@@ -363,25 +426,41 @@ public final class RoutePlanner {
         int[] shut = search.shut;
         int stamp = search.stamp;
         long[] heap = search.heap;
+        int[] heapCell = search.heapCell;
+        // on a floor, of the cells equally promising the one nearest the goal first: else A* opens every cell of the
+        // equal-cost band between start and goal where unknown cells lie (JFR: most of a floor's time); elsewhere by index.
+        // A neighbour as promising as the cell it came from goes on a stack, not the heap (the heap's sifting was a quarter of a plan)
+        boolean deepestFirst = (long) n >= LARGE_CELLS;
+        int[] level = search.level;
+        int levelSize = 0;
         int size = 0;
         cost[start] = 0;
         from[start] = -1;
         seen[start] = stamp;
-        heap[size++] = ((long) heuristic(si, sj, gi, gj, reachTenths) << 32) | start;
+        int startH = weighted(heuristic(si, sj, gi, gj, reachTenths), weight);
+        heap[size] = ((long) startH << 32) | (deepestFirst ? startH : start);
+        heapCell[size++] = start;
         int[] di = {1, -1, 0, 0, 1, 1, -1, -1};
         int[] dj = {0, 0, 1, -1, 1, -1, 1, -1};
         int end = -1;
-        while (size > 0) {
-            long top = heap[0];
-            heap[0] = heap[--size];
-            siftDown(heap, size);
-            int k = (int) top;
+        while (size > 0 || levelSize > 0) {
+            int k;
+            if (levelSize > 0) {
+                k = level[--levelSize];
+            } else {
+                k = heapCell[0];
+                size--;
+                heap[0] = heap[size];
+                heapCell[0] = heapCell[size];
+                siftDown(heap, heapCell, size);
+            }
             if (shut[k] == stamp) {
                 continue;
             }
             shut[k] = stamp;
             int a = k % w;
             int b = k / w;
+            long fk = deepestFirst ? cost[k] + (long) weighted(heuristic(g.i0 + a, g.j0 + b, gi, gj, reachTenths), weight) : -1;
             double ex = OccupancyMap.centre(g.i0 + a) - gx;
             double ey = OccupancyMap.centre(g.j0 + b) - gy;
             if (ex * ex + ey * ey <= reach2 || (g.i0 + a == gi && g.j0 + b == gj)) {
@@ -414,16 +493,28 @@ public final class RoutePlanner {
                     seen[nk] = stamp;
                     cost[nk] = nc;
                     from[nk] = k;
-                    long f = nc + (long) heuristic(g.i0 + na, g.j0 + nb, gi, gj, reachTenths);
+                    int hn = weighted(heuristic(g.i0 + na, g.j0 + nb, gi, gj, reachTenths), weight);
+                    long f = nc + (long) hn;
+                    if (f == fk) {
+                        if (levelSize == level.length) {
+                            level = Arrays.copyOf(level, levelSize * 2);
+                        }
+                        level[levelSize++] = nk;
+                        continue;
+                    }
                     if (size == heap.length) {
                         heap = Arrays.copyOf(heap, size * 2);
+                        heapCell = Arrays.copyOf(heapCell, size * 2);
                     }
-                    heap[size++] = (f << 32) | nk;
-                    siftUp(heap, size - 1);
+                    heap[size] = (f << 32) | (deepestFirst ? hn : nk);
+                    heapCell[size++] = nk;
+                    siftUp(heap, heapCell, size - 1);
                 }
             }
         }
         search.heap = heap;
+        search.heapCell = heapCell;
+        search.level = level;
         if (end < 0) {
             return null;
         }
@@ -673,6 +764,11 @@ public final class RoutePlanner {
         return good;
     }
 
+    /** @return a heuristic's value times a weight (1: unchanged) */
+    private static int weighted(int h, double weight) {
+        return weight == 1.0 ? h : (int) (h * weight);
+    }
+
     private static int heuristic(int i, int j, int gi, int gj, int reachTenths) {
         int dx = Math.abs(i - gi);
         int dy = Math.abs(j - gj);
@@ -680,24 +776,30 @@ public final class RoutePlanner {
         return Math.max(0, octile - reachTenths);
     }
 
-    private static void siftUp(long[] heap, int k) {
+    /** Moves the entry at k up to its place, its cell with it. */
+    private static void siftUp(long[] heap, int[] cells, int k) {
         long v = heap[k];
+        int c = cells[k];
         while (k > 0) {
             int p = (k - 1) >>> 1;
             if (heap[p] <= v) {
                 break;
             }
             heap[k] = heap[p];
+            cells[k] = cells[p];
             k = p;
         }
         heap[k] = v;
+        cells[k] = c;
     }
 
-    private static void siftDown(long[] heap, int size) {
+    /** Moves the entry at the top down to its place, its cell with it. */
+    private static void siftDown(long[] heap, int[] cells, int size) {
         if (size == 0) {
             return;
         }
         long v = heap[0];
+        int c = cells[0];
         int k = 0;
         while (true) {
             int l = 2 * k + 1;
@@ -710,8 +812,10 @@ public final class RoutePlanner {
                 break;
             }
             heap[k] = heap[s];
+            cells[k] = cells[s];
             k = s;
         }
         heap[k] = v;
+        cells[k] = c;
     }
 }

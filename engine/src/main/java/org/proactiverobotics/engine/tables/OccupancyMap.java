@@ -350,6 +350,20 @@ public final class OccupancyMap {
     }
 
     /**
+     * A quick test before many {@link #occupiedWithin} or {@link #occupiedApproached} calls in one
+     * box: false means none of them can find an occupied cell there.
+     *
+     * @param minXM the box's least x, metres
+     * @param minYM its least y, metres
+     * @param maxXM its greatest x, metres
+     * @param maxYM its greatest y, metres
+     * @return whether a chunk overlapping the cells the box touches holds an occupied cell
+     */
+    public boolean occupiedChunkIn(double minXM, double minYM, double maxXM, double maxYM) {
+        return anyOccupied(cell(minXM), cell(minYM), cell(maxXM), cell(maxYM));
+    }
+
+    /**
      * @param xM      a point's x, metres
      * @param yM      its y, metres
      * @param radiusM a distance, metres

@@ -118,6 +118,29 @@ class RoutePlannerTest {
         assertThat(carried.xs()).as("the changed walls changed the route").isNotEqualTo(first.xs());
     }
 
+    /**
+     * Issue 33: the battery's way back on a large floor may come from the quicker weighted search,
+     * but only within the bound it is given (and about the weight's share of the shortest way); under
+     * a bound the weighted way exceeds, it is the shortest route itself.
+     */
+    @Test
+    void aBoundedWayOnALargeFloorIsWithinItsBoundElseTheShortest() {
+        OccupancyMap map = OccupancyMap.empty();
+        rooms(map);
+        double sx = -12.5;
+        double sy = -12.5;
+        double gx = 12.5;
+        double gy = 7.4;
+        Route shortest = RoutePlanner.planSeenFirst(map, sx, sy, gx, gy, 0.1, RADIUS_M);
+        double generousM = 2 * shortest.lengthM();
+        Route quick = RoutePlanner.planSeenFirstBounded(map, sx, sy, gx, gy, 0.1, RADIUS_M, generousM);
+        assertThat(quick.lengthM()).isLessThanOrEqualTo(generousM).isLessThanOrEqualTo(RoutePlanner.BOUND_WEIGHT * shortest.lengthM());
+        Route tight = RoutePlanner.planSeenFirstBounded(map, sx, sy, gx, gy, 0.1, RADIUS_M,
+                Math.min(quick.lengthM(), shortest.lengthM()) - 1e-6);
+        assertThat(tight.xs()).containsExactly(shortest.xs());
+        assertThat(tight.ys()).containsExactly(shortest.ys());
+    }
+
     private static void edit(OccupancyMap map) {
         for (int t = -260; t < -240; t++) {
             map.set(-200, t, OccupancyMap.OCCUPIED);

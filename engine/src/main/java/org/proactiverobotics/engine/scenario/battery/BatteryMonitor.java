@@ -131,8 +131,11 @@ public final class BatteryMonitor extends Rule {
             OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
             double robotRadiusM = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT).axleWidthM() / 2;
             double reachM = station.radiusM() * MoveToRecharge.AT_STATION_FRACTION * 0.9;
-            // the way MoveToRecharge would drive: over seen cells where they lead there
-            Route route = RoutePlanner.planSeenFirst(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM, robotRadiusM);
+            // the way MoveToRecharge would drive: over seen cells where they lead there; on a floor a quicker search's
+            // longer way will do when it is no longer than the way was known to be (the last plan plus what was driven since)
+            double boundM = wayBackM < 0 ? straightM : wayBackM + drivenSincePlanM;
+            Route route = RoutePlanner.planSeenFirstBounded(map, position.xM(), position.yM(), station.xM(), station.yM(), reachM,
+                    robotRadiusM, boundM);
             wayBackM = route == null ? straightM : route.lengthM();
             finishM = -1;
             drivenSincePlanM = 0;
