@@ -144,6 +144,10 @@ class FleetWorldCommandsTest extends CommandLineTest {
             assertThat(Solvability.ofEachRobot(world)).as(name).allSatisfy(plan -> assertThat(plan.solvable())
                     .as(name + ": " + plan.reason()).isTrue());
             double r = world.robot().radiusM();
+            // a robot that backs out for another must see behind it: every fleet robot has rays at 150°, 180° and -150°
+            assertThat(world.robots()).allSatisfy(e -> assertThat(e.robot().sensorAnglesDeg())
+                    .startsWith(-150.0).endsWith(150.0, 180.0)
+                    .containsSubsequence(WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.toArray(Double[]::new)));
             for (int i = 0; i < 4; i++) {
                 WorldSpec.RobotEntry me = world.robots().get(i);
                 for (int j = 0; j < 4; j++) {

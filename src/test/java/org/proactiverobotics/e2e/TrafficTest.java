@@ -147,6 +147,25 @@ class TrafficTest {
         assertThat(report.simTimeS()).as("the run ends with the last mission").isCloseTo(report.robots().get(1).endSimTimeS(), within(0.05));
     }
 
+    /**
+     * A generated world of pillars where, with only the default forward rays, robot 3 backed out for Yield four times
+     * into robot 2, which had stopped behind it after it passed (neither its rays nor its map could see it there): four
+     * robot–robot contacts. {@code generate --robots} draws fleet robots with rays behind, and the collision monitor
+     * stops the backing short of what they see.
+     */
+    @Test
+    void aRobotBackingOutForAnotherSeesTheRobotThatCameBehindIt() throws Exception {
+        Path dir = Files.createTempDirectory("traffic-pillars-");
+        int exit = new picocli.CommandLine(new org.proactiverobotics.app.Main()).execute("generate", "--kind", "pillars",
+                "--count", "5", "--robots", "4", "--seed", "17", "--out", dir.toString());
+        assertThat(exit).isZero();
+        WorldSpec world = org.proactiverobotics.sim2d.WorldFiles.load(dir.resolve("pillars-005.json"));
+        MissionReport report = run(world, NoiseLevel.NONE);
+        assertThat(report.robotCollisions()).as("robot–robot contacts").isZero();
+        assertThat(report.collisions()).as("every contact").isZero();
+        assertThat(report.robots().stream().filter(RobotReport::success).count()).isGreaterThanOrEqualTo(2);
+    }
+
     @Test
     void sixRobotsShareOneStationAndNoneRunsFlat() throws Exception {
         MissionReport report = run(sharedStation(), NoiseLevel.NONE);

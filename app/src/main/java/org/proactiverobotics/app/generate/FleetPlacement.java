@@ -96,16 +96,34 @@ final class FleetPlacement {
         List<WorldSpec.RobotEntry> entries = new ArrayList<>();
         for (int k = 0; k < robots; k++) {
             WorldSpec.Robot r = starts.get(k);
+            double heading = r.headingDeg();
             if (k > 0) { // facing its first checkpoint
                 WorldSpec.Checkpoint to = missions.get(k).get(0);
-                double heading = Math.rint(Math.toDegrees(Math.atan2(to.y() - r.y(), to.x() - r.x())));
-                r = new WorldSpec.Robot(r.x(), r.y(), heading, r.radiusM(), r.maxSpeedMps(), r.sensorRangeM(),
-                        r.sensorAnglesDeg());
+                heading = Math.rint(Math.toDegrees(Math.atan2(to.y() - r.y(), to.x() - r.x())));
             }
+            r = new WorldSpec.Robot(r.x(), r.y(), heading, r.radiusM(), r.maxSpeedMps(), r.sensorRangeM(),
+                    withRearRays(r.sensorAnglesDeg()));
             entries.add(new WorldSpec.RobotEntry(k + 1, r, missions.get(k)));
         }
         return WorldSpec.fleet(base.name(), base.timeStepMs(), base.maxSimTimeS(), base.seed(), base.arena(), entries,
                 base.obstacles(), checkpointRadiusM, stations, base.battery());
+    }
+
+    /**
+     * A robot that gives way backs out over where it came from, where another robot may have come since: the rays a
+     * fleet robot is drawn with look behind too (at 150°, 180° and -150°), so that the collision monitor sees what
+     * it backs toward. Angles already beyond ±90° are kept as they are.
+     */
+    static List<Double> withRearRays(List<Double> anglesDeg) {
+        if (anglesDeg.stream().anyMatch(a -> Math.abs(a) > 90.0)) {
+            return anglesDeg;
+        }
+        List<Double> all = new ArrayList<>();
+        all.add(-150.0);
+        all.addAll(anglesDeg);
+        all.add(150.0);
+        all.add(180.0);
+        return all;
     }
 
     /** What a point must satisfy to be placed. */
