@@ -22,8 +22,10 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * <p>The command's arc is checked against the points the rays hit now and in the last
  * {@value #MEMORY_MS} ms, placed by the GPS and inertial-unit readings (a short memory, as a
  * robot's local costmap keeps): a few rays leave gaps at the flanks, and a pillar or a wall's
- * corner seen a moment ago is still there when it slips between two rays. Plain fields, so it is
- * saved with the rule that holds it.
+ * corner seen a moment ago is still there when it slips between two rays. The memory keeps one hit
+ * per {@value #MEMORY_SPACING_M} m, so the newest scan's hits are checked too, each where it was
+ * read: a wall the body closes on reads nearer than the hit remembered beside it. Plain fields, so
+ * it is saved with the rule that holds it.
  */
 public final class CollisionReflex {
 
@@ -71,6 +73,9 @@ public final class CollisionReflex {
     private double[] hitX = new double[0];
     private double[] hitY = new double[0];
     private long[] hitMs = new long[0];
+    /** The newest scan's hits, x and y (metres), every one as read (the memory above drops those near a remembered hit). */
+    private double[] nowX = new double[0];
+    private double[] nowY = new double[0];
 
     /** What made the last veto, for its reason in words: one of the {@code CAUSE_} constants (not saved). */
     private transient int cause;
@@ -311,24 +316,34 @@ public final class CollisionReflex {
             heading += perStepRad;
             px += dir * ARC_STEP_M * Math.cos(heading);
             py += dir * ARC_STEP_M * Math.sin(heading);
-            for (int k = 0; k < hitX.length; k++) {
-                double dx = hitX[k] - px;
-                double dy = hitY[k] - py;
-                double d2 = dx * dx + dy * dy;
-                if (d2 < keep2) {
-                    // only when the motion brings the body closer: a hit it is already beside or leaving is no veto
-                    double ax = hitX[k] - xM;
-                    double ay = hitY[k] - yM;
-                    if (d2 < ax * ax + ay * ay - 1e-6) {
-                        found(CAUSE_HIT, hitX[k], hitY[k]);
-                        return true;
-                    }
-                }
+            if (approached(hitX, hitY, xM, yM, px, py, keep2) || approached(nowX, nowY, xM, yM, px, py, keep2)) {
+                return true;
             }
             if (map != null && (map.occupiedApproached(xM, yM, px, py, keep)
                     || unseenToo && map.unknownApproached(xM, yM, px, py, keep))) {
                 foundCell(map, px, py, keep);
                 return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Whether the body, moved from (xM, yM) to (px, py), comes within {@code sqrt(keep2)} of one of
+     * the points and closer to it than it was: a point it is already beside or leaving is no veto.
+     */
+    private boolean approached(double[] xs, double[] ys, double xM, double yM, double px, double py, double keep2) {
+        for (int k = 0; k < xs.length; k++) {
+            double dx = xs[k] - px;
+            double dy = ys[k] - py;
+            double d2 = dx * dx + dy * dy;
+            if (d2 < keep2) {
+                double ax = xs[k] - xM;
+                double ay = ys[k] - yM;
+                if (d2 < ax * ax + ay * ay - 1e-6) {
+                    found(CAUSE_HIT, xs[k], ys[k]);
+                    return true;
+                }
             }
         }
         return false;
@@ -423,15 +438,20 @@ public final class CollisionReflex {
         hitX = new double[0];
         hitY = new double[0];
         hitMs = new long[0];
+        nowX = new double[0];
+        nowY = new double[0];
     }
 
-    /** Adds the scan's hits to the memory and forgets the old and the far. */
+    /** Keeps the scan's hits as the newest, adds them to the memory and forgets the old and the far. */
     private void remember(DistanceScan s, double xM, double yM, double yawRad, double radiusM) {
         int n = hitX.length;
         double[] xs = new double[n + s.anglesRad().length];
         double[] ys = new double[xs.length];
         long[] ms = new long[xs.length];
         int m = 0;
+        int fresh = 0;
+        double[] freshX = new double[s.anglesRad().length];
+        double[] freshY = new double[freshX.length];
         double farM = radiusM + s.rangeM() + 0.5;
         for (int k = 0; k < n; k++) {
             if (s.simTimeMs() - hitMs[k] <= MEMORY_MS && Math.hypot(hitX[k] - xM, hitY[k] - yM) <= farM) {
@@ -451,6 +471,8 @@ public final class CollisionReflex {
             double a = yawRad + s.anglesRad()[k];
             double px = xM + (radiusM + d) * Math.cos(a);
             double py = yM + (radiusM + d) * Math.sin(a);
+            freshX[fresh] = px;
+            freshY[fresh++] = py;
             boolean known = false;
             for (int q = 0; q < m && !known; q++) {
                 known = Math.hypot(xs[q] - px, ys[q] - py) < MEMORY_SPACING_M;
@@ -465,5 +487,7 @@ public final class CollisionReflex {
         hitX = Arrays.copyOfRange(xs, from, m);
         hitY = Arrays.copyOfRange(ys, from, m);
         hitMs = Arrays.copyOfRange(ms, from, m);
+        nowX = Arrays.copyOf(freshX, fresh);
+        nowY = Arrays.copyOf(freshY, fresh);
     }
 }
