@@ -24,6 +24,8 @@ public final class JsonSyntax {
             Map.entry("Malformed Unicode escape", "a \\u escape needs four hexadecimal digits"),
             Map.entry("Invalid escape", "a '\\' in a string is followed by something that cannot be escaped"),
             Map.entry("Cannot escape a newline", "a string may not run over a line end"),
+            // a raw line end (or tab) inside a string: most often its closing '"' is missing
+            Map.entry("Unescaped control characters", "a string runs over a line end or holds a tab (a closing '\"' missing?)"),
             Map.entry("Expected name", "a key in double quotes was expected (a ',' too many before a '}'?)"),
             Map.entry("Expected ':'", "a ':' was expected after the key"),
             Map.entry("Expected value", "a value was expected (a ',' too many before a ']'?)"),

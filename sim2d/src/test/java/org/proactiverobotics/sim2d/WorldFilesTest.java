@@ -103,6 +103,9 @@ class WorldFilesTest {
                 "(root): malformed JSON: an object is not closed, or a ',' is missing between its entries (line 2, column 4, in arena)");
         assertThat(problems("{\"name\": x}")).singleElement().asString()
                 .startsWith("(root): malformed JSON: not strict JSON").contains("(line 1, column 10, in name)");
+        assertThat(problems("{\"name\": \"x\",\n \"timeStepMs\": \"32,\n \"arena\": {}}")).singleElement().asString()
+                .startsWith("(root): malformed JSON: a string runs over a line end or holds a tab (a closing '\"' missing?)")
+                .contains("line 2");
         for (String broken : List.of("{\"name\": \"x\",}", "{\"a\": [1,]}", "{\"a\" 1}", "{\"a\": \"b", "// c\n{}", "{'a': 1}",
                 "{\"a\": \"\\q\"}", "{\"a\": 1", MINIMAL + " {}")) {
             assertThat(problems(broken)).as(broken).singleElement().asString().startsWith("(root): malformed JSON: ")
