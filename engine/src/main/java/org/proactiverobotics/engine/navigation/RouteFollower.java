@@ -107,6 +107,8 @@ public final class RouteFollower {
     private int stallsInside;
     /** How often the closed places were opened again because they alone blocked the goal. */
     private int reopened;
+    /** Whether the last step was told the robot shares its world: closed places are then opened whenever they alone block. */
+    private transient boolean shared;
 
     /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
     private transient double[] legM;
@@ -154,7 +156,32 @@ public final class RouteFollower {
      */
     public Status step(OccupancyMap map, double x, double y, double yawRad, double goalX, double goalY, double goalReachM,
                        double robotRadiusM, long simTimeMs, boolean driving) {
+        return step(map, x, y, yawRad, goalX, goalY, goalReachM, robotRadiusM, simTimeMs, driving, false);
+    }
+
+    /**
+     * One step as {@link #step(OccupancyMap, double, double, double, double, double, double, double, long, boolean)},
+     * in a world the robot may share with other robots ({@link SharedWorld}). There a stall is no
+     * proof that a place is narrow (another robot stood in it, or Yield held the robot while the
+     * watch ran): whenever the places closed are all that stand between the robot and its goal they
+     * are opened again, however often, and being boxed in by them opens them too, so that the robot
+     * tries the way again instead of standing until its goal is declared unreachable.
+     *
+     * @param shared whether the robot shares its world with other robots
+     * @return TARGET, NO_ROUTE, or BACK_OFF ({@link #backOffCommand})
+     */
+    public Status step(OccupancyMap map, double x, double y, double yawRad, double goalX, double goalY, double goalReachM,
+                       double robotRadiusM, long simTimeMs, boolean driving, boolean shared) {
         closedNow = false;
+        this.shared = shared;
+        if (shared && stallsInside >= STALLS_INSIDE_LIMIT) {
+            // boxed in by its own marks in a shared world: the marks go, the way is tried again
+            closed = new ClosedPlaces();
+            stallsInside = 0;
+            reopened++;
+            xs = null;
+            restartWatch();
+        }
         if (stallsInside >= STALLS_INSIDE_LIMIT) {
             planned = false;
             plansWithoutRoute++;
@@ -363,7 +390,7 @@ public final class RouteFollower {
             sincePlan = 0;
             ClosedPlaces round = closed.isEmpty() ? null : closed;
             Route route = plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, round);
-            if (route == null && round != null && reopened < REOPENINGS) {
+            if (route == null && round != null && (shared || reopened < REOPENINGS)) {
                 Route through = plan(map, x, y, goalX, goalY, goalReachM, robotRadiusM, null);
                 if (through != null) { // the closed places alone blocked the way: they are tried once more
                     reopened++;

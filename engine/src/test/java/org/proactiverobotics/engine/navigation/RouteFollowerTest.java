@@ -185,6 +185,38 @@ class RouteFollowerTest {
         assertThat(follower.closed().describe()).startsWith("(");
     }
 
+    /**
+     * The same gap with no other way, in a world shared with other robots: the stall may have been
+     * another robot's doing, so the closed gap is opened again each time it alone blocks the goal,
+     * and the robot keeps trying it rather than standing until its checkpoint is unreachable.
+     */
+    @Test
+    void inASharedWorldTheClosedGapIsTriedAgainEachTimeItAloneBlocks() {
+        OccupancyMap map = gapWall(0.32, false);
+        wall(map, -3.0, -3.0, 3.0);
+        wall(map, 3.0, -3.0, 3.0);
+        for (double x = -3.0; x <= 3.0; x += OccupancyMap.CELL_M / 2) {
+            map.set(OccupancyMap.cell(x), OccupancyMap.cell(-3.0), OccupancyMap.OCCUPIED);
+            map.set(OccupancyMap.cell(x), OccupancyMap.cell(3.0), OccupancyMap.OCCUPIED);
+        }
+        RouteFollower follower = new RouteFollower();
+        RouteFollower.Status last = RouteFollower.Status.TARGET;
+        int backOffs = 0;
+        int noRoutes = 0;
+        long limit = 6 * (RouteFollower.STALL_MS + RouteFollower.BACK_OFF_MS);
+        for (long t = 0; t <= limit; t += 32) {
+            RouteFollower.Status status = follower.step(map, -0.3, 0, 0, 2, 0, 0.1, RADIUS_M, t, true, true);
+            if (status == RouteFollower.Status.BACK_OFF && last != RouteFollower.Status.BACK_OFF) {
+                backOffs++;
+            }
+            noRoutes += status == RouteFollower.Status.NO_ROUTE ? 1 : 0;
+            last = status;
+        }
+        assertThat(backOffs).as("stalled, backed off and tried again, over and over").isGreaterThan(RouteFollower.REOPENINGS + 3);
+        assertThat(noRoutes).as("never left without a route by its own marks").isZero();
+        assertThat(follower.boxedIn()).isFalse();
+    }
+
     @Test
     void timeNotSpentDrivingForTheRouteIsNoStall() {
         OccupancyMap map = gapWall(0.32, true);

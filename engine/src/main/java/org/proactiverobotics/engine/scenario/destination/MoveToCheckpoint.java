@@ -106,7 +106,8 @@ public final class MoveToCheckpoint extends Rule {
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), position.simTimeMs());
         RouteFollower.Status status = route.step(map, position.xM(), position.yM(), position.yawRad(), xM, yM,
-                Checkpoint.routeReachM(radiusM), profile.axleWidthM() / 2, position.simTimeMs(), drivingForThis(ctx));
+                Checkpoint.routeReachM(radiusM), profile.axleWidthM() / 2, position.simTimeMs(), drivingForThis(ctx),
+                ctx.findService(SharedWorld.class).isPresent());
         if (belief != null && route.closedNow()) {
             belief.wayClosed(ctx.iteration(), scenario(), route.closed().newestReason());
         }
