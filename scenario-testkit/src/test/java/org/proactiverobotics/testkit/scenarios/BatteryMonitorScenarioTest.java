@@ -110,4 +110,70 @@ class BatteryMonitorScenarioTest {
             assertThat(kit.scheduled()).contains("BatteryMonitor/MoveToRecharge");
         }
     }
+
+    /** A monitor in a world shared with other robots, alone or not: the same rules but where {@code SharedWorld} says. */
+    private static ScenarioKit kit(boolean shared) {
+        ScenarioKit.Builder b = ScenarioKit.builder().builtIn(BATTERY);
+        return (shared ? b.sharedWorld() : b).start();
+    }
+
+    /**
+     * On its way to the station (sent there at x = 2 with 30 %, 2 %/m learnt), the robot is put at {@code x} with {@code pct} left.
+     *
+     * @return what the battery scenario suggests there
+     */
+    private static String onTheWayToTheStationAt(boolean shared, double x, double pct) {
+        try (ScenarioKit kit = kit(shared)) {
+            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
+            drive(kit, 0, 34, 2.0);
+            assertThat(kit.scheduled()).contains("BatteryMonitor/MoveToRecharge");
+            kit.robot().gps(x, 0).headingDeg(180).battery(pct);
+            kit.step(2);
+            return kit.suggestion(BATTERY);
+        }
+    }
+
+    @Test
+    void amongOtherRobotsAWayToTheStationLongerThanWhatIsLeftCanDriveIsNotDrivenFlat() {
+        // from x = 2 (30 %) to 5 with 12 % left: 22 % over 5 m learnt, 4.4 %/m; 6.8 m to the station need 30 %: stopped it
+        // keeps its charge (a way blocked by others may open)
+        assertThat(onTheWayToTheStationAt(true, 5, 12)).isEqualTo("STOP");
+        assertThat(onTheWayToTheStationAt(false, 5, 12)).as("a lone robot's trip as it always was").startsWith("DRIVE");
+        // to x = -0.5 with 20 %: 3.1 %/m, 1.3 m need 4 %: on it drives
+        assertThat(onTheWayToTheStationAt(true, -0.5, 20)).startsWith("DRIVE");
+    }
+
+    /**
+     * Past the point of no return on the last leg (the station 10 m behind), the last checkpoint 2.4 m ahead: the
+     * robot goes on for it, then circles short of it (a route through a wall the map let go), 0.06 m and 0.12 % a step.
+     *
+     * @return the battery left when the monitor sent it to the station, percent (0: not before 5 %)
+     */
+    private static double sentBackCirclingShortOfTheLastCheckpoint(boolean shared) {
+        try (ScenarioKit kit = kit(shared)) {
+            kit.mission().station(-10, 0, 100).checkpoint(3.2, 0);
+            // from x = 0.8 with 30 %: the way back needs 2 %/m x 1.25 x 10.8 m + 5 = 32 %, the checkpoint 11 %: on for it
+            drive(kit, 0.8, 30, 2.0);
+            assertThat(kit.scheduled()).as("goes on for the last checkpoint").doesNotContain("BatteryMonitor/MoveToRecharge");
+            double pct = 26;
+            for (int i = 0; pct > 5; i++) {
+                double a = i * 0.2;
+                pct -= 0.12;
+                kit.robot().gps(2.5 + 0.3 * Math.cos(a), 0.3 * Math.sin(a)).headingDeg(Math.toDegrees(a) + 90).battery(pct);
+                kit.step();
+                if (kit.scheduled().contains("BatteryMonitor/MoveToRecharge")) {
+                    return pct;
+                }
+            }
+            return 0;
+        }
+    }
+
+    @Test
+    void amongOtherRobotsGoingOnForTheLastCheckpointPastTheWayBackEndsWhenItsCostIsSpent() {
+        // a lone robot's monitor as it always was: on while what is left covers the checkpoint (7 to 9 % from the circle)
+        assertThat(sentBackCirclingShortOfTheLastCheckpoint(false)).isBetween(5.0, 9.5);
+        // finishing was to cost 2 %/m x 1.25 x 2.4 m = 6 % from 30 %: spent by 24 %, the station then, with what is left
+        assertThat(sentBackCirclingShortOfTheLastCheckpoint(true)).isBetween(23.5, 24.0);
+    }
 }

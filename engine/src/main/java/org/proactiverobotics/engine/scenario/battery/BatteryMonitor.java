@@ -30,7 +30,8 @@ import org.proactiverobotics.engine.tables.Station;
  * plans, the last plan plus what has been driven since, which the robot could drive back),
  * stretched by the detour factor (1.25 until a trip to the station has measured a longer one, see
  * {@link DrainEstimate#detour()}), plus a reserve. On the last leg the robot goes on past it when
- * the route planned to the last checkpoint is shorter than the way back and within reach.</li>
+ * the route planned to the last checkpoint is shorter than the way back and within reach (in a
+ * shared world only until what that was to cost is spent).</li>
  * <li><b>The leg</b>: can the robot reach its next checkpoint and still get to the station from
  * there (for the last checkpoint: just reach it)? Checked only when a full charge could promise
  * the leg from the station (a recharge then helps), and not on the first leg after a recharge:
@@ -70,6 +71,12 @@ public final class BatteryMonitor extends Rule {
     private int sincePlan;
     /** The route to the last checkpoint planned with the way back, metres (-1: none planned since). */
     private double finishM = -1;
+    /** The last checkpoint the robot went on for past the point of no return (-1: none). */
+    private int finishSeq = -1;
+    /** The battery when it went on for it, percent. */
+    private double finishFromPct;
+    /** What finishing was to cost then, percent. */
+    private double finishCostPct;
 
     private transient PoseEstimate position;
     private transient BatteryState battery;
@@ -161,6 +168,24 @@ public final class BatteryMonitor extends Rule {
     }
 
     /**
+     * In a shared world, whether going on for the last checkpoint past the point of no return is
+     * still within what it was to cost when the robot went on for it: a route through cells the map
+     * lost (walls the rays took free) can hold the robot circling before a wall while the
+     * battery drains; once the cost is spent without the checkpoint reached, the station it is.
+     */
+    private boolean finishWithinBudget(RuleContext ctx, Checkpoint last, double finishPct) {
+        if (ctx.findService(SharedWorld.class).isEmpty()) {
+            return true;
+        }
+        if (finishSeq != last.seq()) {
+            finishSeq = last.seq();
+            finishFromPct = battery.levelPct();
+            finishCostPct = finishPct - RESERVE_PCT;
+        }
+        return battery.levelPct() >= finishFromPct - finishCostPct;
+    }
+
+    /**
      * Condition: a recharge is needed and would help. It would help while the battery is below the
      * level a recharge gives. It is needed past the point of no return (just enough left to reach
      * the station on the detoured way back), or, once the cost of travel has been measured and
@@ -190,7 +215,7 @@ public final class BatteryMonitor extends Rule {
         if (battery.levelPct() < backPct) {
             if (last) {
                 double finishPct = perMetre * detour * plannedWayToM(ctx, next) + RESERVE_PCT;
-                if (finishPct <= backPct && battery.levelPct() >= finishPct) {
+                if (finishPct <= backPct && battery.levelPct() >= finishPct && finishWithinBudget(ctx, next, finishPct)) {
                     neededPct = finishPct;
                     return false; // the last checkpoint is nearer than the station by route, and within reach: finishing is the safer way
                 }

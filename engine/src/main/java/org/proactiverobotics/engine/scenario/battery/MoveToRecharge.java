@@ -12,6 +12,7 @@ import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
+import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.tables.BatteryState;
 import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.PoseEstimate;
@@ -159,7 +160,9 @@ public final class MoveToRecharge extends Rule {
             tripPlannedM = route.remainingM(position.xM(), position.yM(), xM, yM);
         }
         String command;
-        if (status == RouteFollower.Status.BACK_OFF) {
+        if (cannotMakeIt(ctx)) {
+            command = Steering.STOP; // what is left would run flat on the way the map knows: keep it, stopped, till the way opens
+        } else if (status == RouteFollower.Status.BACK_OFF) {
             command = RouteFollower.backOffCommand(profile); // a stall in a narrow place: back off, then plan round it
         } else if (status == RouteFollower.Status.NO_ROUTE && !route.closed().isEmpty()) {
             command = Steering.STOP; // only the narrow places it could not pass lead there: wait, never turn on the spot for ever
@@ -177,6 +180,22 @@ public final class MoveToRecharge extends Rule {
             }
         }
         ctx.suggest(command);
+    }
+
+    /**
+     * In a shared world, whether the battery left is less than the way to the station the map
+     * knows now costs at the cost of travel learnt (without detour, the least it could cost): a
+     * robot that drove on would run flat on the way (a way that other robots block, or a route
+     * through walls the map lost, held robots circling before them till they were flat). Stopped,
+     * it keeps its charge (the battery drains per metre driven) and drives on once a shorter
+     * way opens. A lone robot's trip is as it always was.
+     */
+    private boolean cannotMakeIt(RuleContext ctx) {
+        if (ctx.findService(SharedWorld.class).isEmpty()) {
+            return false;
+        }
+        double leftM = Math.max(0.0, route.remainingM(position.xM(), position.yM(), xM, yM) - radiusM * AT_STATION_FRACTION);
+        return battery.levelPct() < drain.pctPerMetre() * leftM;
     }
 
     /** Whether the robot drove for this trip last iteration: its command won, or the obstacle avoidance amended it. */
