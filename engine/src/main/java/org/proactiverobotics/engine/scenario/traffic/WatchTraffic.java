@@ -18,7 +18,8 @@ import org.proactiverobotics.engine.tables.Station;
  * ({@link Oncoming}) it hands over to {@link GiveWay}; when the robot drives to the recharge
  * station and its rays find the station taken ({@link StationView}) it hands over to
  * {@link WaitForStation}. A robot that charges never gives way (it would leave the station it
- * waited for), nor does one the battery calls to its station ({@link BatteryCall}). Clones itself otherwise.
+ * waited for), nor does one the battery calls to its station ({@link BatteryCall}). After a wait for
+ * the station that ran out ({@link WaitForStation#WAIT_MAX_MS}) it does not wait there again for a while. Clones itself otherwise.
  */
 public final class WatchTraffic extends Rule {
 
@@ -26,6 +27,8 @@ public final class WatchTraffic extends Rule {
     static final long SAME_MOMENT_MS = 40;
 
     private Oncoming oncoming = new Oncoming();
+    /** Until when a taken station does not make the robot wait, simulated ms (its wait there ran out). */
+    private long noStationWaitUntilMs;
 
     private transient PoseEstimate pose;
     private transient DistanceScan scan;
@@ -40,6 +43,15 @@ public final class WatchTraffic extends Rule {
     /** @param oncoming what the front rays saw lately (kept across a hand-over) */
     WatchTraffic(Oncoming oncoming) {
         this.oncoming = oncoming;
+    }
+
+    /**
+     * @param oncoming             what the front rays saw lately
+     * @param noStationWaitUntilMs until when a taken station does not make the robot wait, simulated ms
+     */
+    WatchTraffic(Oncoming oncoming, long noStationWaitUntilMs) {
+        this.oncoming = oncoming;
+        this.noStationWaitUntilMs = noStationWaitUntilMs;
     }
 
     @Override
@@ -78,7 +90,8 @@ public final class WatchTraffic extends Rule {
         }
         // the battery calls the robot to its station: it does not give way (others see it come and give way to it)
         giveWay = coming && !BatteryCall.callsNow(ctx);
-        return giveWay || (StationView.headingThere(last) && StationView.taken(station, pose, scan, radiusM(ctx)));
+        return giveWay || (StationView.headingThere(last) && pose.simTimeMs() >= noStationWaitUntilMs
+                && StationView.taken(station, pose, scan, radiusM(ctx)));
     }
 
     /** @return the robot's radius, half its axle width, metres */

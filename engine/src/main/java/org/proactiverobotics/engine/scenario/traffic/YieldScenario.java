@@ -8,7 +8,7 @@ import org.proactiverobotics.engine.Scenario;
  * The traffic scenario: in a world shared with other robots, gives way to what comes at the
  * robot head-on and waits for a busy recharge station. {@link WatchTraffic} watches every
  * iteration and hands over to {@link GiveWay} (back off, wait a time set by the robot's own id,
- * hand back) or {@link WaitForStation} (stop until the station is seen free, hand back). It
+ * hand back) or {@link WaitForStation} (stop until the station is seen free or the longest wait ran out, hand back). It
  * suggests only while it acts; the strategy ranks it (below the collision monitor, above the
  * battery and the destination in a shared world's default).
  */
