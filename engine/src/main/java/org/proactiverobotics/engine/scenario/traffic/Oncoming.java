@@ -67,6 +67,12 @@ final class Oncoming {
     private final double[] sightUy = new double[SIGHTINGS];
     private int sightings;
     private int nextSighting;
+    /** This scan's front hits (point, unit line of sight, sighted), scratch reused from scan to scan: not saved. */
+    private transient double[] hitX;
+    private transient double[] hitY;
+    private transient double[] hitUx;
+    private transient double[] hitUy;
+    private transient boolean[] sighted;
 
     /**
      * Remembers a scan (a scan already seen is not added again) and tells whether something ahead comes.
@@ -89,11 +95,14 @@ final class Oncoming {
         rangeM = scan.rangeM();
         long now = scan.simTimeMs();
         int front = 0;
-        double[] hitX = new double[scan.anglesRad().length];
-        double[] hitY = new double[hitX.length];
-        double[] hitUx = new double[hitX.length];
-        double[] hitUy = new double[hitX.length];
-        boolean[] sighted = new boolean[hitX.length];
+        if (hitX == null || hitX.length != scan.anglesRad().length) {
+            int n = scan.anglesRad().length;
+            hitX = new double[n];
+            hitY = new double[n];
+            hitUx = new double[n];
+            hitUy = new double[n];
+            sighted = new boolean[n];
+        }
         boolean coming = false;
         for (int k = 0; k < scan.anglesRad().length; k++) {
             double d = scan.distancesM()[k];
@@ -129,7 +138,10 @@ final class Oncoming {
         xs[next] = pose.xM();
         ys[next] = pose.yM();
         yaws[next] = pose.yawRad();
-        readings[next] = scan.distancesM().clone();
+        if (readings[next] == null || readings[next].length != scan.distancesM().length) {
+            readings[next] = new double[scan.distancesM().length];
+        }
+        System.arraycopy(scan.distancesM(), 0, readings[next], 0, readings[next].length); // the slot's array is reused
         next = (next + 1) % SAMPLES;
         count = Math.min(SAMPLES, count + 1);
         return coming;
