@@ -110,6 +110,15 @@ public final class RouteFollower {
 
     /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
     private transient double[] legM;
+    /**
+     * Per leg of the route, its points {@link #blockedAhead} finds near an occupied cell (null: not
+     * yet looked at), for one map at one {@link OccupancyMap#occupancyVersion()} and one room: a leg of
+     * tens of metres was looked at again every step (JFR: 8 % of a 100 m floor's mission).
+     */
+    private transient double[][] nearWalls;
+    private transient OccupancyMap nearWallsMap;
+    private transient long nearWallsVersion;
+    private transient double nearWallsKeepM;
     private transient double targetX;
     private transient double targetY;
     /** Whether the last step planned (a route, or none found): the route may have changed. */
@@ -386,6 +395,7 @@ public final class RouteFollower {
             slackM = route.slackM();
             seenRoute = route.overSeen();
             legM = null;
+            nearWalls = null;
             nearest = 0;
         }
         if (inSight(map, x, y, goalX, goalY, sightM, seenRoute) && !closed.crossed(x, y, goalX, goalY)) {
@@ -506,28 +516,53 @@ public final class RouteFollower {
      */
     private boolean blockedAhead(OccupancyMap map, double x, double y, int nearest, double bodyRadiusM) {
         double checked = 0;
-        double step = OccupancyMap.CELL_M / 2;
         double[] legs = legs();
         double keepM = bodyRadiusM + RoutePlanner.BODY_MARGIN_M;
+        if (nearWalls == null || nearWallsMap != map || nearWallsVersion != map.occupancyVersion() || nearWallsKeepM != keepM) {
+            // the points near walls depend on the route and the occupied cells alone: kept while neither changes (most steps)
+            nearWalls = new double[xs.length - 1][];
+            nearWallsMap = map;
+            nearWallsVersion = map.occupancyVersion();
+            nearWallsKeepM = keepM;
+        }
         for (int k = nearest; k < xs.length - 1 && checked < CHECK_AHEAD_M; k++) {
-            double len = legs[k];
-            int n = Math.max(1, (int) Math.ceil(len / step));
-            boolean walls = true;
-            for (int q = 0; q <= n; q++) {
-                double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
-                double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
-                if (q % PIECE == 0) {
-                    // a piece of the leg with no occupied cell near it needs no look at each point
-                    int last = Math.min(n, q + PIECE - 1);
-                    walls = occupiedNear(map, px, py, xs[k] + (xs[k + 1] - xs[k]) * last / n, ys[k] + (ys[k + 1] - ys[k]) * last / n, keepM);
-                }
-                if (walls && beyond(px - x, py - y, RoutePlanner.START_CLEAR_M) && map.occupiedWithin(px, py, keepM)) {
+            if (nearWalls[k] == null) {
+                nearWalls[k] = pointsNearWalls(map, k, legs[k], keepM);
+            }
+            double[] p = nearWalls[k];
+            for (int q = 0; q < p.length; q += 2) {
+                if (beyond(p[q] - x, p[q + 1] - y, RoutePlanner.START_CLEAR_M)) {
                     return true;
                 }
             }
-            checked += len;
+            checked += legs[k];
         }
         return false;
+    }
+
+    /** @return the points of leg k, every half cell, with an occupied cell within {@code keepM}: x, y pairs, metres */
+    private double[] pointsNearWalls(OccupancyMap map, int k, double len, double keepM) {
+        int n = Math.max(1, (int) Math.ceil(len / (OccupancyMap.CELL_M / 2)));
+        double[] found = NONE;
+        int count = 0;
+        boolean walls = true;
+        for (int q = 0; q <= n; q++) {
+            double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
+            double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
+            if (q % PIECE == 0) {
+                // a piece of the leg with no occupied cell near it needs no look at each point
+                int last = Math.min(n, q + PIECE - 1);
+                walls = occupiedNear(map, px, py, xs[k] + (xs[k + 1] - xs[k]) * last / n, ys[k] + (ys[k + 1] - ys[k]) * last / n, keepM);
+            }
+            if (walls && map.occupiedWithin(px, py, keepM)) {
+                if (count == found.length) {
+                    found = java.util.Arrays.copyOf(found, Math.max(8, 2 * count));
+                }
+                found[count++] = px;
+                found[count++] = py;
+            }
+        }
+        return count == found.length ? found : java.util.Arrays.copyOf(found, count);
     }
 
     /** Points along a line are checked in pieces of this many: a piece with no occupied cell near it is passed at once. */
