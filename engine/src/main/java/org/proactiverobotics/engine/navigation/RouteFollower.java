@@ -567,6 +567,8 @@ public final class RouteFollower {
 
     /** Points along a line are checked in pieces of this many: a piece with no occupied cell near it is passed at once. */
     private static final int PIECE = 16;
+    /** A line is first looked at in stretches of this many points (1.6 m), by the map's blocks of 6.4 m. */
+    private static final int STRETCH = 4 * PIECE;
 
     /**
      * @return whether the map may hold an occupied cell within {@code radiusM} of a point between
@@ -591,14 +593,30 @@ public final class RouteFollower {
         double len = Math.hypot(x1 - x0, y1 - y0);
         int n = (int) Math.ceil(len / (OccupancyMap.CELL_M / 2));
         boolean walls = true;
+        int clearTo = 0; // the points up to this one lie in blocks of the map with no occupied cell
         for (int k = 1; k <= n; k++) {
             double t = (double) k / n;
             double px = x0 + t * (x1 - x0);
             double py = y0 + t * (y1 - y0);
             if ((k - 1) % PIECE == 0) {
+                if (k > clearTo && (k - 1) % STRETCH == 0) {
+                    // a stretch far from any wall seen (a floor's goal is tens of metres away across unexplored rooms) at once
+                    int last = Math.min(n, k + STRETCH - 1);
+                    double tl = (double) last / n;
+                    double lx = x0 + tl * (x1 - x0);
+                    double ly = y0 + tl * (y1 - y0);
+                    if (!map.occupiedBlockIn(Math.min(px, lx) - clearM, Math.min(py, ly) - clearM, Math.max(px, lx) + clearM,
+                            Math.max(py, ly) + clearM)) {
+                        clearTo = last;
+                    }
+                }
+                if (k <= clearTo && !seenOnly) {
+                    k = clearTo;
+                    continue;
+                }
                 // a piece of the line with no occupied cell near it needs no look at each point (on a floor the goal is far)
                 double tb = (double) Math.min(n, k + PIECE - 1) / n;
-                walls = occupiedNear(map, px, py, x0 + tb * (x1 - x0), y0 + tb * (y1 - y0), clearM);
+                walls = k > clearTo && occupiedNear(map, px, py, x0 + tb * (x1 - x0), y0 + tb * (y1 - y0), clearM);
             }
             if (walls && (t * len < RoutePlanner.START_CLEAR_M
                     ? map.occupiedApproached(x0, y0, px, py, clearM - NEAR_SLACK_M)

@@ -43,6 +43,16 @@ public final class OccupancyMap {
     private byte[][] chunks = new byte[0][];
     /** Each chunk's occupied cells, indexed as {@link #chunks}: a search skips the chunks with none. */
     private int[] occupiedIn = new int[0];
+    /**
+     * How many chunks holding an occupied cell each block of {@value #BLOCK_CHUNKS} × {@value #BLOCK_CHUNKS}
+     * chunks of the array holds (block (a, b) covers the array's chunk columns 8a to 8a + 7, rows
+     * likewise): a look along tens of metres of line passes an empty stretch at once.
+     */
+    private int[] blockOccupied = new int[0];
+    private int blockColumns;
+    /** Chunks along a block's side (6.4 m). */
+    public static final int BLOCK_CHUNKS = 8;
+    private static final int BLOCK_SHIFT = 3;
     /** The most chunks the array may span: a square of about 3 km on a side (128 MB of references at most). */
     private static final long MAX_CHUNKS = 1L << 24;
     private int originCx;
@@ -129,6 +139,7 @@ public final class OccupancyMap {
             originCy = loY;
             columns = w;
             rows = hiY - loY + 1;
+            countBlocks();
         }
         int at = (cy - originCy) * columns + cx - originCx;
         byte[] before = chunks[at];
@@ -148,8 +159,25 @@ public final class OccupancyMap {
                 journal[(int) (occupancyVersion % JOURNAL)] = key(cx * CHUNK_CELLS + q % CHUNK_CELLS, cy * CHUNK_CELLS + q / CHUNK_CELLS);
             }
         }
+        countChunk(at, occupiedIn[at], occupied);
         occupiedIn[at] = occupied;
         extend(cx, cy);
+    }
+
+    /** The blocks' counts worked out afresh over the array (after it grew: its origin moved). */
+    private void countBlocks() {
+        blockColumns = (columns + BLOCK_CHUNKS - 1) >> BLOCK_SHIFT;
+        blockOccupied = new int[blockColumns * ((rows + BLOCK_CHUNKS - 1) >> BLOCK_SHIFT)];
+        for (int at = 0; at < occupiedIn.length; at++) {
+            countChunk(at, 0, occupiedIn[at]);
+        }
+    }
+
+    /** Counts a chunk (index in the array) into its block when it came to hold, or stopped holding, an occupied cell. */
+    private void countChunk(int at, int before, int after) {
+        if ((before > 0) != (after > 0)) {
+            blockOccupied[((at / columns) >> BLOCK_SHIFT) * blockColumns + ((at % columns) >> BLOCK_SHIFT)] += after > 0 ? 1 : -1;
+        }
     }
 
     /** @return the cell index (column) holding an x, or row holding a y, metres */
@@ -284,7 +312,9 @@ public final class OccupancyMap {
             return false;
         }
         if ((c[at] >= OCCUPIED) != (state >= OCCUPIED)) {
-            occupiedIn[(cy - originCy) * columns + cx - originCx] += state >= OCCUPIED ? 1 : -1;
+            int slot = (cy - originCy) * columns + cx - originCx;
+            countChunk(slot, occupiedIn[slot], occupiedIn[slot] + (state >= OCCUPIED ? 1 : -1));
+            occupiedIn[slot] += state >= OCCUPIED ? 1 : -1;
             occupancyVersion++;
             journal[(int) (occupancyVersion % JOURNAL)] = key(i, j);
         }
@@ -361,6 +391,31 @@ public final class OccupancyMap {
      */
     public boolean occupiedChunkIn(double minXM, double minYM, double maxXM, double maxYM) {
         return anyOccupied(cell(minXM), cell(minYM), cell(maxXM), cell(maxYM));
+    }
+
+    /**
+     * As {@link #occupiedChunkIn}, by blocks of {@value #BLOCK_CHUNKS} × {@value #BLOCK_CHUNKS} chunks:
+     * coarser (true more often), at the cost of a look or four for a box of a few metres.
+     *
+     * @param minXM the box's least x, metres
+     * @param minYM its least y, metres
+     * @param maxXM its greatest x, metres
+     * @param maxYM its greatest y, metres
+     * @return whether a block overlapping the cells the box touches holds an occupied cell
+     */
+    public boolean occupiedBlockIn(double minXM, double minYM, double maxXM, double maxYM) {
+        int a0 = Math.max(0, (cell(minXM) >> CHUNK_SHIFT) - originCx) >> BLOCK_SHIFT;
+        int a1 = Math.min(columns - 1, (cell(maxXM) >> CHUNK_SHIFT) - originCx) >> BLOCK_SHIFT;
+        int b0 = Math.max(0, (cell(minYM) >> CHUNK_SHIFT) - originCy) >> BLOCK_SHIFT;
+        int b1 = Math.min(rows - 1, (cell(maxYM) >> CHUNK_SHIFT) - originCy) >> BLOCK_SHIFT;
+        for (int b = b0; b <= b1; b++) {
+            for (int a = a0; a <= a1; a++) {
+                if (blockOccupied[b * blockColumns + a] > 0) {
+                    return true;
+                }
+            }
+        }
+        return false;
     }
 
     /**
