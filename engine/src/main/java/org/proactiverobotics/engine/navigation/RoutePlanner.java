@@ -55,15 +55,20 @@ public final class RoutePlanner {
      */
     private static final class Search {
         private static final ThreadLocal<Search> OF_THREAD = ThreadLocal.withInitial(Search::new);
-        int[] cost = new int[0];
-        int[] from = new int[0];
-        /** Cells reached (cost and parent valid) and cells done, where equal to {@link #stamp}. */
-        int[] seen = new int[0];
-        int[] shut = new int[0];
-        /** Cells whose {@link #info} is this plan's, where equal to {@link #stamp}. */
-        int[] known = new int[0];
-        /** A cell's state worked out once per plan: -1 blocked, else its extra cost ({@link Grid#extra}). */
-        int[] info = new int[0];
+        /**
+         * Each cell's entries side by side, {@value #FIELDS} ints a cell (one cache line holds a cell's
+         * all; six arrays of a floor's area were six lines and often six pages a neighbour, JFR):
+         * reached (cost and parent valid) where equal to {@link #stamp}, cost, parent, done where equal
+         * to the stamp, state known where equal to the stamp, and the state ({@link #info}).
+         */
+        int[] cells = new int[0];
+        static final int FIELDS = 6;
+        static final int SEEN = 0;
+        static final int COST = 1;
+        static final int FROM = 2;
+        static final int SHUT = 3;
+        static final int KNOWN = 4;
+        static final int INFO = 5;
         int stamp;
         /** The open cells' keys (f, then on a large area the heuristic, else the cell) and, at the same places, the cells. */
         long[] heap = new long[1024];
@@ -76,24 +81,21 @@ public final class RoutePlanner {
          *         cost; worked out once per plan (the search asks for a cell up to a dozen times)
          */
         int info(Grid g, int k, int a, int b) {
-            if (known[k] != stamp) {
-                known[k] = stamp;
-                info[k] = g.blocked(a, b) ? -1 : g.extra(a, b);
+            int at = k * FIELDS;
+            if (cells[at + KNOWN] != stamp) {
+                cells[at + KNOWN] = stamp;
+                cells[at + INFO] = g.blocked(a, b) ? -1 : g.extra(a, b);
             }
-            return info[k];
+            return cells[at + INFO];
         }
 
         /** @return this thread's arrays, large enough for an area of n cells, with a fresh stamp */
         static Search forArea(int n) {
             Search s = OF_THREAD.get();
-            if (s.cost.length < n || s.stamp == Integer.MAX_VALUE) {
-                int size = Math.max(n, s.cost.length);
-                s.cost = new int[size];
-                s.from = new int[size];
-                s.seen = new int[size];
-                s.shut = new int[size];
-                s.known = new int[size];
-                s.info = new int[size];
+            if (s.cells.length < (long) n * FIELDS || s.stamp == Integer.MAX_VALUE) {
+                // with room to grow: a floor's area grows as it is explored, and each new array was tens of megabytes
+                long size = Math.max((long) n * FIELDS, s.cells.length + s.cells.length / 2L);
+                s.cells = new int[(int) Math.min(size, Integer.MAX_VALUE - 8 - (Integer.MAX_VALUE - 8) % FIELDS)];
                 s.stamp = 0;
             }
             s.stamp++;
@@ -429,10 +431,8 @@ public final class RoutePlanner {
         double reach2 = goalReachM * goalReachM;
         int reachTenths = (int) Math.floor(goalReachM / c * 10);
         Search search = Search.forArea(n);
-        int[] cost = search.cost;
-        int[] from = search.from;
-        int[] seen = search.seen;
-        int[] shut = search.shut;
+        int[] node = search.cells;
+        final int fields = Search.FIELDS;
         int stamp = search.stamp;
         long[] heap = search.heap;
         int[] heapCell = search.heapCell;
@@ -443,9 +443,9 @@ public final class RoutePlanner {
         int[] level = search.level;
         int levelSize = 0;
         int size = 0;
-        cost[start] = 0;
-        from[start] = -1;
-        seen[start] = stamp;
+        node[start * fields + Search.COST] = 0;
+        node[start * fields + Search.FROM] = -1;
+        node[start * fields + Search.SEEN] = stamp;
         int startH = weighted(heuristic(si, sj, gi, gj, reachTenths), weight);
         heap[size] = ((long) startH << 32) | (deepestFirst ? startH : start);
         heapCell[size++] = start;
@@ -463,13 +463,14 @@ public final class RoutePlanner {
                 heapCell[0] = heapCell[size];
                 siftDown(heap, heapCell, size);
             }
-            if (shut[k] == stamp) {
+            if (node[k * fields + Search.SHUT] == stamp) {
                 continue;
             }
-            shut[k] = stamp;
+            node[k * fields + Search.SHUT] = stamp;
+            int costK = node[k * fields + Search.COST];
             int a = k % w;
             int b = k / w;
-            long fk = deepestFirst ? cost[k] + (long) weighted(heuristic(g.i0 + a, g.j0 + b, gi, gj, reachTenths), weight) : -1;
+            long fk = deepestFirst ? costK + (long) weighted(heuristic(g.i0 + a, g.j0 + b, gi, gj, reachTenths), weight) : -1;
             double ex = OccupancyMap.centre(g.i0 + a) - gx;
             double ey = OccupancyMap.centre(g.j0 + b) - gy;
             if (ex * ex + ey * ey <= reach2 || (g.i0 + a == gi && g.j0 + b == gj)) {
@@ -483,7 +484,8 @@ public final class RoutePlanner {
                     continue;
                 }
                 int nk = nb * w + na;
-                if (shut[nk] == stamp) {
+                int at = nk * fields;
+                if (node[at + Search.SHUT] == stamp) {
                     continue;
                 }
                 int extra = search.info(g, nk, na, nb);
@@ -497,11 +499,11 @@ public final class RoutePlanner {
                 if (d >= 4 && (search.info(g, b * w + na, na, b) < 0 || search.info(g, nb * w + a, a, nb) < 0)) {
                     continue;
                 }
-                int nc = cost[k] + (d < 4 ? 10 : 14) + extra;
-                if (seen[nk] != stamp || nc < cost[nk]) {
-                    seen[nk] = stamp;
-                    cost[nk] = nc;
-                    from[nk] = k;
+                int nc = costK + (d < 4 ? 10 : 14) + extra;
+                if (node[at + Search.SEEN] != stamp || nc < node[at + Search.COST]) {
+                    node[at + Search.SEEN] = stamp;
+                    node[at + Search.COST] = nc;
+                    node[at + Search.FROM] = k;
                     int hn = weighted(heuristic(g.i0 + na, g.j0 + nb, gi, gj, reachTenths), weight);
                     long f = nc + (long) hn;
                     if (f == fk) {
@@ -528,7 +530,7 @@ public final class RoutePlanner {
             return null;
         }
         List<Integer> cells = new ArrayList<>();
-        for (int k = end; k >= 0; k = from[k]) {
+        for (int k = end; k >= 0; k = node[k * fields + Search.FROM]) {
             cells.add(k);
         }
         int m = cells.size();
