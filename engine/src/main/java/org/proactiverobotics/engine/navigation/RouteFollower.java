@@ -549,6 +549,17 @@ public final class RouteFollower {
         for (int q = 0; q <= n; q++) {
             double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
             double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
+            if (q % STRETCH == 0) {
+                // a stretch in blocks of the map with no occupied cell holds no point near a wall
+                int last = Math.min(n, q + STRETCH - 1);
+                double lx = xs[k] + (xs[k + 1] - xs[k]) * last / n;
+                double ly = ys[k] + (ys[k + 1] - ys[k]) * last / n;
+                if (!map.occupiedBlockIn(Math.min(px, lx) - keepM, Math.min(py, ly) - keepM, Math.max(px, lx) + keepM,
+                        Math.max(py, ly) + keepM)) {
+                    q = last;
+                    continue;
+                }
+            }
             if (q % PIECE == 0) {
                 // a piece of the leg with no occupied cell near it needs no look at each point
                 int last = Math.min(n, q + PIECE - 1);
