@@ -475,7 +475,48 @@ public final class OccupancyMap {
         if (!anyOccupied(cell(px - keepM), cell(py - keepM), cell(px + keepM), cell(py + keepM))) {
             return false;
         }
-        return approached(fromX, fromY, px, py, keepM, OCCUPIED);
+        return occupiedApproachedByChunk(fromX, fromY, px, py, keepM);
+    }
+
+    /**
+     * {@link #approached} for occupied cells, chunk by chunk: a chunk with none is passed, and in the
+     * others a cell's byte is read before its distances are worked out (a wall is a few of a box's
+     * cells; this was 6 % of a floor's mission, JFR). The same answer, in another order.
+     */
+    private boolean occupiedApproachedByChunk(double fromX, double fromY, double px, double py, double keepM) {
+        int i0 = cell(px - keepM);
+        int i1 = cell(px + keepM);
+        int j0 = cell(py - keepM);
+        int j1 = cell(py + keepM);
+        double keep2 = keepM * keepM;
+        for (int cy = j0 >> CHUNK_SHIFT; cy <= j1 >> CHUNK_SHIFT; cy++) {
+            for (int cx = i0 >> CHUNK_SHIFT; cx <= i1 >> CHUNK_SHIFT; cx++) {
+                int a = cx - originCx;
+                int b = cy - originCy;
+                if (a < 0 || b < 0 || a >= columns || b >= rows || occupiedIn[b * columns + a] == 0) {
+                    continue;
+                }
+                byte[] c = chunks[b * columns + a];
+                int ja = Math.max(j0, cy << CHUNK_SHIFT);
+                int jb = Math.min(j1, (cy << CHUNK_SHIFT) + CHUNK_MASK);
+                int ia = Math.max(i0, cx << CHUNK_SHIFT);
+                int ib = Math.min(i1, (cx << CHUNK_SHIFT) + CHUNK_MASK);
+                for (int j = ja; j <= jb; j++) {
+                    int row = (j & CHUNK_MASK) * CHUNK_CELLS;
+                    for (int i = ia; i <= ib; i++) {
+                        if (c[row + (i & CHUNK_MASK)] >= OCCUPIED) {
+                            double ccx = centre(i);
+                            double ccy = centre(j);
+                            double d2 = (ccx - px) * (ccx - px) + (ccy - py) * (ccy - py);
+                            if (d2 < keep2 && d2 < (ccx - fromX) * (ccx - fromX) + (ccy - fromY) * (ccy - fromY) - 1e-6) {
+                                return true;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     /**
