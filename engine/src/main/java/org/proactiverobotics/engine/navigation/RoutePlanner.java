@@ -347,7 +347,7 @@ public final class RoutePlanner {
      * battery's way back: its last plan plus what was driven since): on a large area (at least
      * {@value #LARGE_CELLS} cells) the search's heuristic is first weighted by {@value #BOUND_WEIGHT},
      * and its route is taken when it is no longer than {@code boundM} plus {@value #BOUND_SLACK} of it
-     * ({@link #BOUND_SLACK}: never shorter than the shortest); else, and on a smaller area,
+     * ({@link #BOUND_SLACK}); else, and on a smaller area,
      * the shortest route. A shortest-route search across a floor opens every cell as promising as
      * the way round the walls (JFR: 133 000 cells a plan on a 100 m by 100 m floor, most of a step's
      * time); the weighted one heads for the goal and opens a tenth of them.
