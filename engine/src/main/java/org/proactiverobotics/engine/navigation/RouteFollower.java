@@ -112,6 +112,15 @@ public final class RouteFollower {
 
     /** Each leg's length, metres, worked out once per route (hypot is slow and the legs are measured every step). */
     private transient double[] legM;
+    /**
+     * Per leg of the route, its points {@link #blockedAhead} finds near an occupied cell (null: not
+     * yet looked at), for one map at one {@link OccupancyMap#occupancyVersion()} and one room: a leg of
+     * tens of metres was looked at again every step (JFR: 8 % of a 100 m floor's mission).
+     */
+    private transient double[][] nearWalls;
+    private transient OccupancyMap nearWallsMap;
+    private transient long nearWallsVersion;
+    private transient double nearWallsKeepM;
     private transient double targetX;
     private transient double targetY;
     /** Whether the last step planned (a route, or none found): the route may have changed. */
@@ -413,6 +422,7 @@ public final class RouteFollower {
             slackM = route.slackM();
             seenRoute = route.overSeen();
             legM = null;
+            nearWalls = null;
             nearest = 0;
         }
         if (inSight(map, x, y, goalX, goalY, sightM, seenRoute) && !closed.crossed(x, y, goalX, goalY)) {
@@ -533,32 +543,70 @@ public final class RouteFollower {
      */
     private boolean blockedAhead(OccupancyMap map, double x, double y, int nearest, double bodyRadiusM) {
         double checked = 0;
-        double step = OccupancyMap.CELL_M / 2;
         double[] legs = legs();
         double keepM = bodyRadiusM + RoutePlanner.BODY_MARGIN_M;
+        if (nearWalls == null || nearWallsMap != map || nearWallsVersion != map.occupancyVersion() || nearWallsKeepM != keepM) {
+            // the points near walls depend on the route and the occupied cells alone: kept while neither changes (most steps)
+            nearWalls = new double[xs.length - 1][];
+            nearWallsMap = map;
+            nearWallsVersion = map.occupancyVersion();
+            nearWallsKeepM = keepM;
+        }
         for (int k = nearest; k < xs.length - 1 && checked < CHECK_AHEAD_M; k++) {
-            double len = legs[k];
-            int n = Math.max(1, (int) Math.ceil(len / step));
-            boolean walls = true;
-            for (int q = 0; q <= n; q++) {
-                double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
-                double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
-                if (q % PIECE == 0) {
-                    // a piece of the leg with no occupied cell near it needs no look at each point
-                    int last = Math.min(n, q + PIECE - 1);
-                    walls = occupiedNear(map, px, py, xs[k] + (xs[k + 1] - xs[k]) * last / n, ys[k] + (ys[k + 1] - ys[k]) * last / n, keepM);
-                }
-                if (walls && beyond(px - x, py - y, RoutePlanner.START_CLEAR_M) && map.occupiedWithin(px, py, keepM)) {
+            if (nearWalls[k] == null) {
+                nearWalls[k] = pointsNearWalls(map, k, legs[k], keepM);
+            }
+            double[] p = nearWalls[k];
+            for (int q = 0; q < p.length; q += 2) {
+                if (beyond(p[q] - x, p[q + 1] - y, RoutePlanner.START_CLEAR_M)) {
                     return true;
                 }
             }
-            checked += len;
+            checked += legs[k];
         }
         return false;
     }
 
+    /** @return the points of leg k, every half cell, with an occupied cell within {@code keepM}: x, y pairs, metres */
+    private double[] pointsNearWalls(OccupancyMap map, int k, double len, double keepM) {
+        int n = Math.max(1, (int) Math.ceil(len / (OccupancyMap.CELL_M / 2)));
+        double[] found = NONE;
+        int count = 0;
+        boolean walls = true;
+        for (int q = 0; q <= n; q++) {
+            double px = xs[k] + (xs[k + 1] - xs[k]) * q / n;
+            double py = ys[k] + (ys[k + 1] - ys[k]) * q / n;
+            if (q % STRETCH == 0) {
+                // a stretch in blocks of the map with no occupied cell holds no point near a wall
+                int last = Math.min(n, q + STRETCH - 1);
+                double lx = xs[k] + (xs[k + 1] - xs[k]) * last / n;
+                double ly = ys[k] + (ys[k + 1] - ys[k]) * last / n;
+                if (!map.occupiedBlockIn(Math.min(px, lx) - keepM, Math.min(py, ly) - keepM, Math.max(px, lx) + keepM,
+                        Math.max(py, ly) + keepM)) {
+                    q = last;
+                    continue;
+                }
+            }
+            if (q % PIECE == 0) {
+                // a piece of the leg with no occupied cell near it needs no look at each point
+                int last = Math.min(n, q + PIECE - 1);
+                walls = occupiedNear(map, px, py, xs[k] + (xs[k + 1] - xs[k]) * last / n, ys[k] + (ys[k + 1] - ys[k]) * last / n, keepM);
+            }
+            if (walls && map.occupiedWithin(px, py, keepM)) {
+                if (count == found.length) {
+                    found = java.util.Arrays.copyOf(found, Math.max(8, 2 * count));
+                }
+                found[count++] = px;
+                found[count++] = py;
+            }
+        }
+        return count == found.length ? found : java.util.Arrays.copyOf(found, count);
+    }
+
     /** Points along a line are checked in pieces of this many: a piece with no occupied cell near it is passed at once. */
     private static final int PIECE = 16;
+    /** A line is first looked at in stretches of this many points (1.6 m), by the map's blocks of 6.4 m. */
+    private static final int STRETCH = 4 * PIECE;
 
     /**
      * @return whether the map may hold an occupied cell within {@code radiusM} of a point between
@@ -583,14 +631,30 @@ public final class RouteFollower {
         double len = Math.hypot(x1 - x0, y1 - y0);
         int n = (int) Math.ceil(len / (OccupancyMap.CELL_M / 2));
         boolean walls = true;
+        int clearTo = 0; // the points up to this one lie in blocks of the map with no occupied cell
         for (int k = 1; k <= n; k++) {
             double t = (double) k / n;
             double px = x0 + t * (x1 - x0);
             double py = y0 + t * (y1 - y0);
             if ((k - 1) % PIECE == 0) {
+                if (k > clearTo && (k - 1) % STRETCH == 0) {
+                    // a stretch far from any wall seen (a floor's goal is tens of metres away across unexplored rooms) at once
+                    int last = Math.min(n, k + STRETCH - 1);
+                    double tl = (double) last / n;
+                    double lx = x0 + tl * (x1 - x0);
+                    double ly = y0 + tl * (y1 - y0);
+                    if (!map.occupiedBlockIn(Math.min(px, lx) - clearM, Math.min(py, ly) - clearM, Math.max(px, lx) + clearM,
+                            Math.max(py, ly) + clearM)) {
+                        clearTo = last;
+                    }
+                }
+                if (k <= clearTo && !seenOnly) {
+                    k = clearTo;
+                    continue;
+                }
                 // a piece of the line with no occupied cell near it needs no look at each point (on a floor the goal is far)
                 double tb = (double) Math.min(n, k + PIECE - 1) / n;
-                walls = occupiedNear(map, px, py, x0 + tb * (x1 - x0), y0 + tb * (y1 - y0), clearM);
+                walls = k > clearTo && occupiedNear(map, px, py, x0 + tb * (x1 - x0), y0 + tb * (y1 - y0), clearM);
             }
             if (walls && (t * len < RoutePlanner.START_CLEAR_M
                     ? map.occupiedApproached(x0, y0, px, py, clearM - NEAR_SLACK_M)

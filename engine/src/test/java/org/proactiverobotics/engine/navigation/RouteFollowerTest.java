@@ -31,6 +31,68 @@ class RouteFollowerTest {
         assertThat(route.size()).as("a few waypoints, not a chain of cells").isLessThan(8);
     }
 
+    /**
+     * Issue 33: a look along a line tens of metres long passes stretches far from any wall at once;
+     * it still finds every occupied cell within the clearance of any of its points, as a look at each
+     * point does, wherever along the line (a first, middle or last stretch) the cell lies.
+     */
+    @Test
+    void aLookAlongALongLineFindsEveryWallAsALookAtEachPointDoes() {
+        java.util.Random random = new java.util.Random(5);
+        OccupancyMap map = OccupancyMap.empty();
+        for (int j = -300; j < 300; j++) {
+            for (int i = -300; i < 300; i++) {
+                map.set(i, j, OccupancyMap.FREE); // seen, for the looks over seen cells only; unknown beyond 15 m
+            }
+        }
+        int blocked = 0;
+        for (int trial = 0; trial < 400; trial++) {
+            int[][] walls = new int[2][];
+            for (int n = 0; n < walls.length; n++) {
+                walls[n] = new int[] {random.nextInt(800) - 400, random.nextInt(800) - 400};
+                map.set(walls[n][0], walls[n][1], OccupancyMap.OCCUPIED);
+            }
+            // a line from afar past the first wall, a little to its side, ending anywhere up to as far beyond it
+            double wx = OccupancyMap.centre(walls[0][0]) + random.nextGaussian() * 0.2;
+            double wy = OccupancyMap.centre(walls[0][1]) + random.nextGaussian() * 0.2;
+            double x0 = random.nextDouble() * 40 - 20;
+            double y0 = random.nextDouble() * 40 - 20;
+            double beyond = random.nextDouble() * 1.2;
+            double x1 = wx + (wx - x0) * beyond;
+            double y1 = wy + (wy - y0) * beyond;
+            double clearM = 0.1 + random.nextDouble() * 0.3;
+            boolean seenOnly = trial % 5 == 0;
+            boolean expected = inSightPointByPoint(map, x0, y0, x1, y1, clearM, seenOnly);
+            assertThat(RouteFollower.inSight(map, x0, y0, x1, y1, clearM, seenOnly)).as("trial %d", trial).isEqualTo(expected);
+            blocked += expected ? 0 : 1;
+            for (int[] w : walls) {
+                map.set(w[0], w[1], OccupancyMap.FREE);
+            }
+        }
+        assertThat(blocked).as("lines a wall blocks, of 400").isBetween(100, 360);
+    }
+
+    /** The look at each point, with no piece or stretch passed at once. */
+    private static boolean inSightPointByPoint(OccupancyMap map, double x0, double y0, double x1, double y1, double clearM,
+                                               boolean seenOnly) {
+        double len = Math.hypot(x1 - x0, y1 - y0);
+        int n = (int) Math.ceil(len / (OccupancyMap.CELL_M / 2));
+        for (int k = 1; k <= n; k++) {
+            double t = (double) k / n;
+            double px = x0 + t * (x1 - x0);
+            double py = y0 + t * (y1 - y0);
+            if (t * len < RoutePlanner.START_CLEAR_M
+                    ? map.occupiedApproached(x0, y0, px, py, clearM - RouteFollower.NEAR_SLACK_M)
+                    : map.occupiedWithin(px, py, clearM)) {
+                return false;
+            }
+            if (seenOnly && map.get(OccupancyMap.cell(px), OccupancyMap.cell(py)) == OccupancyMap.UNKNOWN) {
+                return false;
+            }
+        }
+        return true;
+    }
+
     @Test
     void aFollowerSavedAndRestoredFollowsTheSameRoute() {
         OccupancyMap map = OccupancyMap.empty();

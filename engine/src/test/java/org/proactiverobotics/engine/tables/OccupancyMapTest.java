@@ -32,6 +32,72 @@ class OccupancyMapTest {
         assertThat(map.maxCellExclusive(true)).isGreaterThan(999);
     }
 
+    /**
+     * Issue 33: the map counts its occupied chunks per block of 6.4 m, so that a look along a long line
+     * passes an empty stretch at once: a box holding an occupied cell is never passed, whichever way
+     * the map grew; a box far from every one is; cells cleared again leave their blocks empty.
+     */
+    @Test
+    void occupiedBlocksFollowTheCellsAsTheyComeAndGoAndAsTheMapGrows() {
+        OccupancyMap map = OccupancyMap.empty();
+        Random random = new Random(11);
+        List<int[]> occupied = new ArrayList<>();
+        for (int n = 0; n < 400; n++) {
+            // cells far apart on every side: the array grows, and its origin moves, many times
+            int i = random.nextInt(4000) - 2000;
+            int j = random.nextInt(4000) - 2000;
+            map.set(i, j, random.nextBoolean() ? OccupancyMap.OCCUPIED : OccupancyMap.FREE);
+            if (map.get(i, j) == OccupancyMap.OCCUPIED) {
+                occupied.add(new int[] {i, j});
+            }
+        }
+        for (int[] c : occupied) {
+            double x = OccupancyMap.centre(c[0]);
+            double y = OccupancyMap.centre(c[1]);
+            assertThat(map.occupiedBlockIn(x - 0.01, y - 0.01, x + 0.01, y + 0.01)).isTrue();
+        }
+        assertThat(map.occupiedBlockIn(300, 300, 310, 310)).as("far beyond every cell").isFalse();
+        for (int[] c : occupied) {
+            map.set(c[0], c[1], OccupancyMap.FREE);
+        }
+        for (int[] c : occupied) {
+            double x = OccupancyMap.centre(c[0]);
+            double y = OccupancyMap.centre(c[1]);
+            assertThat(map.occupiedBlockIn(x - 1, y - 1, x + 1, y + 1)).as("cleared").isFalse();
+        }
+    }
+
+    /** occupiedApproached, read chunk by chunk, answers as a look at every cell of its box does. */
+    @Test
+    void anApproachedWallIsFoundAsALookAtEveryCellFindsIt() {
+        OccupancyMap map = OccupancyMap.empty();
+        Random random = new Random(3);
+        for (int n = 0; n < 300; n++) {
+            map.set(random.nextInt(80) - 40, random.nextInt(80) - 40, OccupancyMap.OCCUPIED);
+        }
+        int found = 0;
+        for (int trial = 0; trial < 2000; trial++) {
+            double px = random.nextDouble() * 4 - 2;
+            double py = random.nextDouble() * 4 - 2;
+            double fromX = px + random.nextGaussian() * 0.1;
+            double fromY = py + random.nextGaussian() * 0.1;
+            double keepM = 0.05 + random.nextDouble() * 0.3;
+            boolean expected = false;
+            for (int j = OccupancyMap.cell(py - keepM); j <= OccupancyMap.cell(py + keepM); j++) {
+                for (int i = OccupancyMap.cell(px - keepM); i <= OccupancyMap.cell(px + keepM); i++) {
+                    double cx = OccupancyMap.centre(i);
+                    double cy = OccupancyMap.centre(j);
+                    double d2 = (cx - px) * (cx - px) + (cy - py) * (cy - py);
+                    expected |= d2 < keepM * keepM && d2 < (cx - fromX) * (cx - fromX) + (cy - fromY) * (cy - fromY) - 1e-6
+                            && map.get(i, j) == OccupancyMap.OCCUPIED;
+                }
+            }
+            assertThat(map.occupiedApproached(fromX, fromY, px, py, keepM)).as("trial %d", trial).isEqualTo(expected);
+            found += expected ? 1 : 0;
+        }
+        assertThat(found).isBetween(200, 1800);
+    }
+
     @Test
     void changedChunksRebuildTheSameMapAndTheOccupiedCellsAreVisitedOnce() {
         OccupancyMap map = OccupancyMap.empty();
