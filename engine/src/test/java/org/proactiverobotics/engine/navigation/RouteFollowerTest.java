@@ -218,8 +218,8 @@ class RouteFollowerTest {
         assertThat(follower.remainingM(-0.45, 0, 2, 0)).as("round by the door").isGreaterThan(4.0);
     }
 
-    @Test
-    void withTheGapClosedAndNoOtherWayThereIsNoRoute() {
+    /** The 0.32 m gap in a wall, the whole walled in: the gap is the only way. */
+    private static OccupancyMap gapOnlyWay() {
         OccupancyMap map = gapWall(0.32, false);
         wall(map, -3.0, -3.0, 3.0);
         wall(map, 3.0, -3.0, 3.0);
@@ -227,6 +227,12 @@ class RouteFollowerTest {
             map.set(OccupancyMap.cell(x), OccupancyMap.cell(-3.0), OccupancyMap.OCCUPIED);
             map.set(OccupancyMap.cell(x), OccupancyMap.cell(3.0), OccupancyMap.OCCUPIED);
         }
+        return map;
+    }
+
+    @Test
+    void withTheGapClosedAndNoOtherWayThereIsNoRoute() {
+        OccupancyMap map = gapOnlyWay();
         RouteFollower follower = new RouteFollower();
         RouteFollower.Status status = RouteFollower.Status.TARGET;
         int backOffs = 0;
@@ -254,13 +260,7 @@ class RouteFollowerTest {
      */
     @Test
     void inASharedWorldTheClosedGapIsTriedAgainEachTimeItAloneBlocks() {
-        OccupancyMap map = gapWall(0.32, false);
-        wall(map, -3.0, -3.0, 3.0);
-        wall(map, 3.0, -3.0, 3.0);
-        for (double x = -3.0; x <= 3.0; x += OccupancyMap.CELL_M / 2) {
-            map.set(OccupancyMap.cell(x), OccupancyMap.cell(-3.0), OccupancyMap.OCCUPIED);
-            map.set(OccupancyMap.cell(x), OccupancyMap.cell(3.0), OccupancyMap.OCCUPIED);
-        }
+        OccupancyMap map = gapOnlyWay();
         RouteFollower follower = new RouteFollower();
         RouteFollower.Status last = RouteFollower.Status.TARGET;
         int backOffs = 0;

@@ -155,15 +155,19 @@ class YieldScenarioTest {
         assertThat(waits.get(1) - waits.get(0)).as("apart by more than the backing off").isGreaterThan(1_000);
     }
 
+    /** A station 2 m behind and two checkpoints ahead: 2 %/m learnt over 2 m, the next leg and the way back cost more than is left. */
+    private static void headForTheStation(ScenarioKit kit) {
+        kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
+        for (int i = 0; i <= 20; i++) {
+            kit.robot().gps(i * 0.1, 0).headingDeg(0).battery(34 - i * 0.2);
+            kit.step();
+        }
+    }
+
     @Test
     void aRobotHeadingForATakenStationWaitsNearbyUntilItIsFreeThenDrivesOn() {
         try (ScenarioKit kit = kit(BATTERY)) {
-            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
-            // 2 %/m learnt over 2 m: the next leg and the way back cost more than is left, it heads for the station
-            for (int i = 0; i <= 20; i++) {
-                kit.robot().gps(i * 0.1, 0).headingDeg(0).battery(34 - i * 0.2);
-                kit.step();
-            }
+            headForTheStation(kit);
             kit.step();
             assertThat(kit.decision().winner()).isEqualTo(BATTERY);
             // 0.8 m from the station, facing it: something stands on it (the front rays stop 0.18 m short of its centre)
@@ -186,11 +190,7 @@ class YieldScenarioTest {
     @Test
     void aRobotWaitingForAStationThatStaysTakenGoesOnAfterItsLongestWait() {
         try (ScenarioKit kit = kit(BATTERY)) {
-            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
-            for (int i = 0; i <= 20; i++) {
-                kit.robot().gps(i * 0.1, 0).headingDeg(0).battery(34 - i * 0.2);
-                kit.step();
-            }
+            headForTheStation(kit);
             // what takes the station never leaves (robots waiting round a free station see each other so)
             kit.robot().gps(-1.2, 0).headingDeg(180).scan(ahead(0.5));
             kit.step(5 * SECOND);
@@ -207,11 +207,7 @@ class YieldScenarioTest {
     @Test
     void aWallBehindTheStationDoesNotTakeIt() {
         try (ScenarioKit kit = kit(BATTERY)) {
-            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
-            for (int i = 0; i <= 20; i++) {
-                kit.robot().gps(i * 0.1, 0).headingDeg(0).battery(34 - i * 0.2);
-                kit.step();
-            }
+            headForTheStation(kit);
             kit.robot().gps(-1.2, 0).headingDeg(180).scan(ahead(0.88)); // hits at x = -2.2: beyond the station's centre
             kit.step(10);
             assertThat(kit.suggestions(YIELD)).containsOnlyNulls();
