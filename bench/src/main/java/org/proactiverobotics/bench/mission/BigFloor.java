@@ -47,7 +47,7 @@ public final class BigFloor {
      * @param seed    the seed of its walls' unevenness, doors and furniture
      * @return the floor as a world
      */
-    static WorldSpec world(double widthM, double heightM, long seed) {
+    public static WorldSpec world(double widthM, double heightM, long seed) {
         return WorldFiles.parse(json(widthM, heightM, seed), "big floor");
     }
 

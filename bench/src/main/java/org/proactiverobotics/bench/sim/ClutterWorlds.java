@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 
+import org.proactiverobotics.bench.mission.BigFloor;
 import org.proactiverobotics.sim2d.WorldFiles;
 import org.proactiverobotics.sim2d.WorldSpec;
 
@@ -22,12 +23,16 @@ final class ClutterWorlds {
     private ClutterWorlds() {
     }
 
-    /** @param which {@code reference} or an obstacle count */
+    /** @param which {@code reference}, an obstacle count, or a building floor {@code floorWxH} in metres (BigFloor, seed 1) */
     static WorldSpec of(String which) {
         WorldSpec reference = WorldFiles.bundled(WorldFiles.DEFAULT_WORLD);
         WorldSpec.Battery endless = new WorldSpec.Battery(100, 0.0, 100, 10);
         if ("reference".equals(which)) {
             return reference.withBattery(endless);
+        }
+        if (which.startsWith("floor")) {
+            String[] size = which.substring("floor".length()).split("x");
+            return BigFloor.world(Double.parseDouble(size[0]), Double.parseDouble(size[1]), 1).withBattery(endless);
         }
         return cluttered(Integer.parseInt(which), endless);
     }
