@@ -472,10 +472,7 @@ public final class OccupancyMap {
      * @return whether an occupied cell's centre lies within {@code keepM} of the point and closer to it than to where the body is
      */
     public boolean occupiedApproached(double fromX, double fromY, double px, double py, double keepM) {
-        if (!anyOccupied(cell(px - keepM), cell(py - keepM), cell(px + keepM), cell(py + keepM))) {
-            return false;
-        }
-        return occupiedApproachedByChunk(fromX, fromY, px, py, keepM);
+        return occupiedApproachedByChunk(fromX, fromY, px, py, keepM); // it passes the chunks with no occupied cell itself
     }
 
     /**
