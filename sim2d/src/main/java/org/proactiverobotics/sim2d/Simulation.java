@@ -1,5 +1,6 @@
 package org.proactiverobotics.sim2d;
 
+import java.util.ArrayList;
 import java.util.List;
 
 import org.dyn4j.collision.broadphase.CollisionItemBroadphaseDetectorAdapter;
@@ -39,6 +40,7 @@ public final class Simulation {
     private final SensorNoise noise;
     private final World<Body> world;
     private final Body wallBody;
+    private final StaticRayIndex staticRays;
     private final WorldRobot[] robots;
     private long steps;
 
@@ -74,9 +76,13 @@ public final class Simulation {
 
         this.wallBody = spec.arena().isCircle() ? createWall(spec.arena().radiusM()) : createRectangleWall(spec.arena());
         world.addBody(wallBody);
+        List<Body> statics = new ArrayList<>(List.of(wallBody));
         if (!spec.obstacles().isEmpty()) {
-            world.addBody(createObstacles(spec.obstacles()));
+            Body obstacles = createObstacles(spec.obstacles());
+            world.addBody(obstacles);
+            statics.add(obstacles);
         }
+        this.staticRays = new StaticRayIndex(statics, world.getRaycastDetector());
         this.robots = new WorldRobot[spec.robots().size()];
         for (int i = 0; i < robots.length; i++) {
             robots[i] = new WorldRobot(this, world, i);
@@ -171,6 +177,11 @@ public final class Simulation {
     static double normalizeAngle(double a) {
         double r = Math.IEEEremainder(a, 2.0 * Math.PI);
         return r <= -Math.PI ? r + 2.0 * Math.PI : r;
+    }
+
+    /** @return the static bodies' fixtures in a grid, for the robots' distance sensors */
+    StaticRayIndex staticRays() {
+        return staticRays;
     }
 
     // ---- public accessors ----

@@ -42,6 +42,9 @@ final class WorldRobot {
     private final SimRobot robot;
     private final GroundTruth truth;
     private final DetectFilter<Body, BodyFixture> notSelf;
+    /** Only the other robots (the static bodies are cast against in {@link #rays}). */
+    private final DetectFilter<Body, BodyFixture> otherMoving;
+    private final StaticRayIndex.Query rays;
     private final Ray ray = new Ray(0.0);
     private final double[] distanceCache;
     private final List<Object> touching = new ArrayList<>();
@@ -92,6 +95,13 @@ final class WorldRobot {
                 return b != self;
             }
         };
+        this.otherMoving = new DetectFilter<>(true, true, null) {
+            @Override
+            public boolean isAllowed(Body b, BodyFixture f) {
+                return b != self && !b.isStatic();
+            }
+        };
+        this.rays = sim.staticRays().new Query();
         this.robot = new SimRobot(this, robotSpec);
         this.distanceCache = new double[robot.distanceSensors().size()];
         this.truth = new GroundTruth(checkpoints.size());
@@ -354,8 +364,8 @@ final class WorldRobot {
             double range = s.getRangeM();
             ray.setDirection(heading + s.getAngleRad());
             // Cast from the centre so that a ray starting inside a touching obstacle still hits it.
-            RaycastResult<Body, BodyFixture> hit = world.raycastClosest(ray, radius + range, notSelf);
-            double d = hit == null ? range : Math.min(range, Math.max(0.0, hit.getRaycast().getDistance() - radius));
+            double hitM = closestHit(radius + range);
+            double d = hitM < 0.0 ? range : Math.min(range, Math.max(0.0, hitM - radius));
             double sigma = noise.distanceSigmaAtM(d);
             if (sigma > 0.0) {
                 d += sigma * SensorNoise.gaussian(seed, steps, 3 + i);
@@ -363,6 +373,30 @@ final class WorldRobot {
             }
             distanceCache[i] = d;
         }
+    }
+
+    /**
+     * The distance along {@link #ray} to the nearest body but this robot, as dyn4j's {@code raycastClosest}
+     * with {@link #notSelf} finds it: the static bodies through the grid, then the other robots (if any)
+     * through dyn4j within that distance.
+     *
+     * @param maxLength how far to look, metres
+     * @return the distance, metres, or -1 when nothing lies within maxLength
+     */
+    private double closestHit(double maxLength) {
+        double best = rays.closest(ray, maxLength);
+        if (best != 0.0 && sim.robotCount() > 1) {
+            RaycastResult<Body, BodyFixture> hit = world.raycastClosest(ray, best < 0.0 ? maxLength : best, otherMoving);
+            if (hit != null) {
+                best = hit.getRaycast().getDistance();
+            }
+        }
+        if (best == 0.0) {
+            // After a hit at 0 dyn4j reads its bound as no bound at all: leave that case to dyn4j's own cast.
+            RaycastResult<Body, BodyFixture> hit = world.raycastClosest(ray, maxLength, notSelf);
+            return hit == null ? -1.0 : hit.getRaycast().getDistance();
+        }
+        return best;
     }
 
     double batteryLevel() {
