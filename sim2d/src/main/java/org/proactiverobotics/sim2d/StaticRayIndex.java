@@ -17,7 +17,8 @@ import org.dyn4j.geometry.Vector2;
  * dyn4j's {@code raycastClosest} walks its tree down every node whose AABB (each grown by 0.2 m) the whole
  * ray crosses and casts against every such fixture; on a floor of thousands of boxes that is most of a
  * sensor read. Here the ray walks the grid's cells in order from its start and stops once the nearest hit
- * found lies before the next cell, casting with the world's own ray-cast detector against each fixture met.
+ * found lies before the next cell, casting with the world's own ray-cast detector against each fixture met
+ * whose box (grown by a millimetre) the ray crosses before that hit.
  * The nearest distance is the minimum over the fixtures cast against, whatever their order, so it is the
  * distance dyn4j finds, bit for bit. Cells are {@value #CELL_M} m (larger on a very large arena, so that the
  * grid stays under {@value #MAX_CELLS} cells). Read-only once built: any number of {@link Query} objects may
@@ -49,6 +50,8 @@ final class StaticRayIndex {
     private final int[] items;
     private final BodyFixture[] fixtures;
     private final Body[] bodies;
+    /** Each fixture's box grown by twice {@link #MARGIN_M}: min x, min y, max x, max y, side by side. */
+    private final double[] boxes;
 
     /**
      * @param statics  the static bodies (their fixtures and transforms must not change afterwards)
@@ -78,6 +81,14 @@ final class StaticRayIndex {
         }
         this.fixtures = fs.toArray(new BodyFixture[0]);
         this.bodies = bs.toArray(new Body[0]);
+        this.boxes = new double[4 * fixtures.length];
+        for (int i = 0; i < fixtures.length; i++) {
+            AABB box = boxes.get(i);
+            this.boxes[4 * i] = box.getMinX();
+            this.boxes[4 * i + 1] = box.getMinY();
+            this.boxes[4 * i + 2] = box.getMaxX();
+            this.boxes[4 * i + 3] = box.getMaxY();
+        }
         if (fixtures.length == 0) {
             x0 = y0 = x1 = y1 = 0.0;
         }
@@ -205,7 +216,7 @@ final class StaticRayIndex {
                 int c = cy * nx + cx;
                 for (int k = start[c], end = start[c + 1]; k < end; k++) {
                     int item = items[k];
-                    if (seenBefore(item)) {
+                    if (seenBefore(item) || !crossesBox(item, sx, sy, dx, dy, best + MARGIN_M)) {
                         continue;
                     }
                     // The same call and bound as dyn4j's raycastClosest: the bound shrinks to each hit found.
@@ -231,6 +242,30 @@ final class StaticRayIndex {
                 }
             }
             return found ? best : -1.0;
+        }
+
+        /** Whether the ray from (sx, sy) along (dx, dy) meets the item's grown box before length (slab test). */
+        private boolean crossesBox(int item, double sx, double sy, double dx, double dy, double length) {
+            int b = 4 * item;
+            double lo = 0.0;
+            double hi = length;
+            if (dx != 0.0) {
+                double ta = (boxes[b] - sx) / dx;
+                double tb = (boxes[b + 2] - sx) / dx;
+                lo = Math.max(lo, Math.min(ta, tb));
+                hi = Math.min(hi, Math.max(ta, tb));
+            } else if (sx < boxes[b] || sx > boxes[b + 2]) {
+                return false;
+            }
+            if (dy != 0.0) {
+                double ta = (boxes[b + 1] - sy) / dy;
+                double tb = (boxes[b + 3] - sy) / dy;
+                lo = Math.max(lo, Math.min(ta, tb));
+                hi = Math.min(hi, Math.max(ta, tb));
+            } else if (sy < boxes[b + 1] || sy > boxes[b + 3]) {
+                return false;
+            }
+            return lo <= hi;
         }
 
         private boolean seenBefore(int item) {
