@@ -11,6 +11,7 @@ import org.dyn4j.dynamics.Settings;
 import org.dyn4j.geometry.Convex;
 import org.dyn4j.geometry.Geometry;
 import org.dyn4j.geometry.MassType;
+import org.dyn4j.world.PhysicsWorld;
 import org.dyn4j.world.World;
 
 /**
@@ -57,7 +58,9 @@ public final class Simulation {
         this.spec = spec;
         this.noise = noise;
         double dt = spec.timeStepS();
-        this.world = new World<>();
+        // Sized for the bodies it will hold (wall, obstacles, robots): dyn4j sizes by this the hash sets its
+        // constraint graph clears every step, 512 slots by default for a world of three bodies.
+        this.world = new World<>(spec.robots().size() + 2, PhysicsWorld.DEFAULT_INITIAL_JOINT_CAPACITY);
         Settings settings = world.getSettings();
         // dyn4j names it a frequency but takes the step period in seconds.
         settings.setStepFrequency(dt);
