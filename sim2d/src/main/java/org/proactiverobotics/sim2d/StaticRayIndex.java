@@ -2,6 +2,7 @@ package org.proactiverobotics.sim2d;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.ToDoubleFunction;
 
 import org.dyn4j.collision.narrowphase.Raycast;
 import org.dyn4j.collision.narrowphase.RaycastDetector;
@@ -141,6 +142,29 @@ final class StaticRayIndex {
 
     private static int clamp(int i, int n) {
         return i < 0 ? 0 : Math.min(i, n - 1);
+    }
+
+    /**
+     * The least of {@code distance} over the static fixtures whose cells meet the box from (x0, y0) to (x1, y1),
+     * metres, or {@code bound} when none is less. Those fixtures include every one whose box meets the box (and
+     * some more, some more than once), so a minimum over them is the minimum over what the world's own box query
+     * finds, whenever whatever lies nearer than {@code bound} must meet the box.
+     */
+    double least(double x0, double y0, double x1, double y1, double bound, ToDoubleFunction<Object> distance) {
+        int cx0 = clamp((int) Math.floor((x0 - minX) / cell), nx);
+        int cx1 = clamp((int) Math.floor((x1 - minX) / cell), nx);
+        int cy0 = clamp((int) Math.floor((y0 - minY) / cell), ny);
+        int cy1 = clamp((int) Math.floor((y1 - minY) / cell), ny);
+        double min = bound;
+        for (int cy = cy0; cy <= cy1; cy++) {
+            for (int cx = cx0; cx <= cx1; cx++) {
+                int c = cy * nx + cx;
+                for (int k = start[c]; k < start[c + 1]; k++) {
+                    min = Math.min(min, distance.applyAsDouble(fixtures[items[k]].getUserData()));
+                }
+            }
+        }
+        return min;
     }
 
     /** @return how many static fixtures the grid holds */

@@ -1,13 +1,12 @@
 package org.proactiverobotics.sim2d;
 
 import java.util.ArrayList;
-import java.util.Iterator;
 import java.util.List;
+import java.util.function.ToDoubleFunction;
 
 import org.dyn4j.dynamics.Body;
 import org.dyn4j.dynamics.BodyFixture;
 import org.dyn4j.dynamics.contact.ContactConstraint;
-import org.dyn4j.geometry.AABB;
 import org.dyn4j.geometry.Geometry;
 import org.dyn4j.geometry.MassType;
 import org.dyn4j.geometry.Ray;
@@ -15,7 +14,6 @@ import org.dyn4j.geometry.Transform;
 import org.dyn4j.geometry.Vector2;
 import org.dyn4j.world.DetectFilter;
 import org.dyn4j.world.World;
-import org.dyn4j.world.result.DetectResult;
 import org.dyn4j.world.result.RaycastResult;
 
 /**
@@ -45,6 +43,11 @@ final class WorldRobot {
     /** Only the other robots (the static bodies are cast against in {@link #rays}). */
     private final DetectFilter<Body, BodyFixture> otherMoving;
     private final StaticRayIndex.Query rays;
+    /** Where {@link #obstacleGap} measures from, metres (set before each use: no lambda allocated per step). */
+    private double clearanceX;
+    private double clearanceY;
+    /** The rim's gap to a static fixture's obstacle, metres; infinite for the arena wall's fixtures. */
+    private final ToDoubleFunction<Object> obstacleGap = this::obstacleGap;
     private final Ray ray = new Ray(0.0);
     private final double[] distanceCache;
     private final List<Object> touching = new ArrayList<>();
@@ -291,16 +294,19 @@ final class WorldRobot {
         double min = Math.min(truth.minClearanceM, wallClearance(x, y));
         double reach = robotSpec.radiusM() + min;
         if (min > 0.0 && !spec.obstacles().isEmpty()) {
-            AABB query = new AABB(x - reach, y - reach, x + reach, y + reach);
-            Iterator<DetectResult<Body, BodyFixture>> it = world.detectIterator(query, notSelf);
-            while (it.hasNext()) {
-                Object data = it.next().getFixture().getUserData();
-                if (data instanceof WorldSpec.Obstacle o) {
-                    min = Math.min(min, Math.max(0.0, o.distanceTo(x, y) - robotSpec.radiusM()));
-                }
-            }
+            // An obstacle nearer than min reaches into the box round the disc of radius reach: the grid's cells
+            // there hold it, so this is the minimum dyn4j's box query gave, without walking its tree.
+            clearanceX = x;
+            clearanceY = y;
+            min = sim.staticRays().least(x - reach, y - reach, x + reach, y + reach, min, obstacleGap);
         }
         truth.minClearanceM = min;
+    }
+
+    private double obstacleGap(Object fixtureData) {
+        return fixtureData instanceof WorldSpec.Obstacle o
+                ? Math.max(0.0, o.distanceTo(clearanceX, clearanceY) - robotSpec.radiusM())
+                : Double.POSITIVE_INFINITY;
     }
 
     // ---- device back-ends (package-private: devices call these) ----
