@@ -24,7 +24,10 @@ import org.proactiverobotics.sim2d.WorldSpec;
 /**
  * Steps per second of the sim2d world, headless: the robot wanders (drives ahead, turns away from what its
  * front sensors see) and, in {@link #stepAndReadAllSensors}, reads GPS, inertial unit, all the distance sensors
- * and the battery every step, as a controller does. {@link #stepOnly} drives blind, for the physics alone.
+ * and the battery every step, as a controller does. {@link #stepOnly} drives blind, for the physics alone: a wide
+ * circle, which on a building floor runs into walls on about half its steps and so times dyn4j's contact solving
+ * as much as the floor. {@link #stepOnWanderPath} is the physics alone on the wander's own path (its wheel commands
+ * recorded once, then replayed without reading a sensor), which keeps off the walls as a controller's drive does.
  * {@code world} is the bundled reference arena or a generated arena with 10, 100 or 1000 obstacles at
  * constant density, or a BigFloor building floor. The simulation restarts at each iteration so that every iteration sees the same run.
  *
@@ -57,9 +60,17 @@ public class SimStepBenchmark {
     private static final int LEFT_8 = WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.indexOf(8.0);
     private static final int RIGHT_8 = WorldSpec.Robot.DEFAULT_SENSOR_ANGLES_DEG.indexOf(-8.0);
 
+    /** How many of the wander's steps are recorded for {@link #stepOnWanderPath}; replays wrap round after. */
+    static final int WANDER_STEPS = 3_000_000;
+
+    /** The wander's command at each step: 0 ahead, 1 turn left, 2 turn right. */
+    private byte[] wanderPath;
+    private int wanderStep;
+
     @Setup(Level.Trial)
     public void buildWorld() {
         spec = ClutterWorlds.of(world);
+        wanderPath = null;
     }
 
     @Setup(Level.Iteration)
@@ -67,26 +78,53 @@ public class SimStepBenchmark {
         sim = new Simulation(spec, noise ? SensorNoise.SMALL : SensorNoise.NONE);
         robot = sim.robot();
         sensors = robot.distanceSensors();
+        wanderStep = 0;
+    }
+
+    /** Records the wander's commands once a trial (before the first replay), from a simulation of its own. */
+    private void recordWanderPath() {
+        Simulation recorder = new Simulation(spec, noise ? SensorNoise.SMALL : SensorNoise.NONE);
+        SimRobot r = recorder.robot();
+        List<DistanceSensor> s = r.distanceSensors();
+        byte[] path = new byte[WANDER_STEPS];
+        for (int i = 0; i < path.length; i++) {
+            path[i] = wanderCommand(s);
+            drive(r, path[i]);
+            recorder.step();
+        }
+        wanderPath = path;
+    }
+
+    /** The wander's choice from the front rays: ahead, or turn away from the nearer side. */
+    private static byte wanderCommand(List<DistanceSensor> s) {
+        double frontLeft = Math.min(s.get(LEFT_8).getValue(), s.get(LEFT_8 + 1).getValue());
+        double frontRight = Math.min(s.get(RIGHT_8).getValue(), s.get(RIGHT_8 - 1).getValue());
+        if (Math.min(frontLeft, frontRight) < 0.35) {
+            return frontRight < frontLeft ? (byte) 1 : (byte) 2;
+        }
+        return 0;
+    }
+
+    private static void drive(SimRobot r, byte command) {
+        switch (command) {
+            case 1 -> r.setWheelSpeeds(-0.3, 0.3);
+            case 2 -> r.setWheelSpeeds(0.3, -0.3);
+            default -> r.setWheelSpeeds(0.5, 0.45);
+        }
     }
 
     /** One step with every sensor read, as a controller's step does. */
     @Benchmark
     public double stepAndReadAllSensors() {
         double sum = 0;
-        double frontLeft = Math.min(sensors.get(LEFT_8).getValue(), sensors.get(LEFT_8 + 1).getValue());
-        double frontRight = Math.min(sensors.get(RIGHT_8).getValue(), sensors.get(RIGHT_8 - 1).getValue());
+        byte command = wanderCommand(sensors);
         for (DistanceSensor s : sensors) {
             sum += s.getValue();
         }
         double[] p = robot.gps().getValues();
         double[] rpy = robot.inertialUnit().getRollPitchYaw();
         sum += p[0] + p[1] + rpy[2] + robot.battery().getLevelPct();
-        if (Math.min(frontLeft, frontRight) < 0.35) {
-            double turn = frontRight < frontLeft ? 0.3 : -0.3;
-            robot.setWheelSpeeds(-turn, turn);
-        } else {
-            robot.setWheelSpeeds(0.5, 0.45);
-        }
+        drive(robot, command);
         sim.step();
         return sum;
     }
@@ -95,6 +133,18 @@ public class SimStepBenchmark {
     @Benchmark
     public double stepOnly() {
         robot.setWheelSpeeds(0.5, 0.45);
+        sim.step();
+        return sim.groundTruth().x();
+    }
+
+    /** One step of physics and ground truth only, on the wander's path (its commands replayed, no sensor read). */
+    @Benchmark
+    public double stepOnWanderPath() {
+        if (wanderPath == null) {
+            recordWanderPath();
+        }
+        drive(robot, wanderPath[wanderStep]);
+        wanderStep = wanderStep + 1 == wanderPath.length ? 0 : wanderStep + 1;
         sim.step();
         return sim.groundTruth().x();
     }

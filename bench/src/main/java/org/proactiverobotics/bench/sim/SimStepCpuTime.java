@@ -6,7 +6,7 @@ import java.util.Arrays;
 import java.util.Locale;
 
 /**
- * {@link SimStepBenchmark}'s two methods timed by the thread's processor time instead of wall time, for a
+ * {@link SimStepBenchmark}'s three methods timed by the thread's processor time instead of wall time, for a
  * machine shared with other jobs (where JMH's throughput swings by a factor of two or more): for each world,
  * 3 warm-up and 5 measured iterations of N steps, each from a restart, and the median in microseconds a step.
  *
@@ -25,7 +25,7 @@ public final class SimStepCpuTime {
         ThreadMXBean mx = ManagementFactory.getThreadMXBean();
         double sink = 0;
         for (int k = 1; k < args.length; k++) {
-            for (int m = 0; m < 2; m++) {
+            for (int m = 0; m < 3; m++) {
                 SimStepBenchmark b = new SimStepBenchmark();
                 b.world = args[k];
                 b.noise = false;
@@ -35,7 +35,7 @@ public final class SimStepCpuTime {
                     b.restart();
                     long t0 = mx.getCurrentThreadCpuTime();
                     for (int i = 0; i < n; i++) {
-                        sink += m == 0 ? b.stepAndReadAllSensors() : b.stepOnly();
+                        sink += m == 0 ? b.stepAndReadAllSensors() : m == 1 ? b.stepOnly() : b.stepOnWanderPath();
                     }
                     long t = mx.getCurrentThreadCpuTime() - t0;
                     if (it >= 3) {
@@ -44,7 +44,7 @@ public final class SimStepCpuTime {
                 }
                 Arrays.sort(us);
                 System.out.printf(Locale.ROOT, "%-14s %-22s median %.3f us/step (min %.3f, max %.3f)%n", args[k],
-                        m == 0 ? "stepAndReadAllSensors" : "stepOnly", us[2], us[0], us[4]);
+                        m == 0 ? "stepAndReadAllSensors" : m == 1 ? "stepOnly" : "stepOnWanderPath", us[2], us[0], us[4]);
             }
         }
         // Keeps the JIT compiler from dropping the steps' results.
