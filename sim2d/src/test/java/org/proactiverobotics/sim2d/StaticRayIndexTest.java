@@ -92,4 +92,32 @@ class StaticRayIndexTest {
         assertThat(bp.isUpdateTrackingEnabled()).isTrue();
         assertThat(bp.isUpdated(obstacles, box)).isFalse();
     }
+
+    @Test
+    void leastClearanceThroughTheGridIsTheLeastOverEveryObstacle() {
+        WorldSpec spec = clutter();
+        Simulation sim = new Simulation(spec);
+        double radius = 0.12;
+        SplittableRandom rnd = new SplittableRandom(5);
+        int found = 0;
+        for (int i = 0; i < 20_000; i++) {
+            double x = -6.5 + 13 * rnd.nextDouble();
+            double y = -5 + 10 * rnd.nextDouble();
+            double bound = 0.5 * rnd.nextDouble();
+            double reach = radius + bound;
+            double expected = bound;
+            for (WorldSpec.Obstacle o : spec.obstacles()) {
+                expected = Math.min(expected, Math.max(0.0, o.distanceTo(x, y) - radius));
+            }
+            double got = sim.staticRays().least(x - reach, y - reach, x + reach, y + reach, bound,
+                    data -> data instanceof WorldSpec.Obstacle o ? Math.max(0.0, o.distanceTo(x, y) - radius)
+                            : Double.POSITIVE_INFINITY);
+            assertThat(Double.doubleToRawLongBits(got)).as("point %d", i).isEqualTo(Double.doubleToRawLongBits(expected));
+            if (got < bound) {
+                found++;
+            }
+        }
+        // Most points have some obstacle within reach: the test is not passed by returning the bound.
+        assertThat(found).isGreaterThan(5_000);
+    }
 }
