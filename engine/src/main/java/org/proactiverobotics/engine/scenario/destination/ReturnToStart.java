@@ -8,6 +8,7 @@ import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.ParkingPlace;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMap;
@@ -17,12 +18,14 @@ import org.proactiverobotics.engine.tables.PoseEstimateTable;
 /**
  * In a world shared with other robots, once every checkpoint is reached: drives back to where the robot started
  * (its {@code initial_pose}), as a fleet robot returns to its parking place, so that a robot that is done does not
- * stand on the others' way or checkpoints. It follows a route planned on the map like {@link MoveToCheckpoint}
+ * stand on the others' way or checkpoints. It parks not on the start itself but on the nearest place of its map
+ * that closes no way ({@link ParkingPlace}): a start in a gap's mouth would shut the only way through. It follows a route planned on the map like {@link MoveToCheckpoint}
  * (the collision monitor and Yield still rank above it, the battery scenario still takes it to charge), then
  * suggests STOP there; pushed more than {@value #LEAVE_M} m off it (it gave way), it drives back. When no plan
  * finds a way there for {@value #NO_ROUTE_MS} ms (another robot stands on it, or it is walled in), or the drive
- * has taken longer than {@link #budgetMs} allows, it gives up for good and stops where it is: no endless
- * re-planning, no battery spent going nowhere. Clones itself to the run's end; a checkpoint not yet reached (the
+ * has taken longer than {@link #budgetMs} allows, it parks instead at the nearest such place to where it stands
+ * (once), and failing that too gives up for good and stops where it is: no endless re-planning, no battery
+ * spent going nowhere. Clones itself to the run's end; a checkpoint not yet reached (the
  * mission got a new one) hands back to {@link GetCheckpoint}.
  */
 public final class ReturnToStart extends Rule {
@@ -38,6 +41,11 @@ public final class ReturnToStart extends Rule {
 
     private double xM;
     private double yM;
+    /** Where it parks, metres (chosen on its map at the first iteration, and again once if it cannot get there). */
+    private double parkX;
+    private double parkY;
+    /** 0: no place chosen yet; 1: near the start; 2: near where it stood when it could not get to the first. */
+    private int placeChoice;
     /** The route and its re-planning (saved with the rule). */
     private RouteFollower route = new RouteFollower();
     /** The side the robot last turned to, +1 left, -1 right, 0 none. */
@@ -105,7 +113,14 @@ public final class ReturnToStart extends Rule {
         }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         double radiusM = profile.axleWidthM() / 2;
-        double awayM = position.distanceTo(xM, yM);
+        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), now);
+        if (placeChoice == 0) {
+            double[] place = ParkingPlace.near(map, xM, yM, radiusM);
+            parkX = place[0];
+            parkY = place[1];
+            placeChoice = 1;
+        }
+        double awayM = position.distanceTo(parkX, parkY);
         if (awayM < radiusM / 2 || parked && awayM < LEAVE_M) {
             if (!parked) {
                 parked = true;
@@ -120,8 +135,7 @@ public final class ReturnToStart extends Rule {
             budgetMs = drivenMs + BUDGET_BASE_MS + (long) (BUDGET_FACTOR * 1000 * awayM / profile.maxSpeedMps());
         }
         BeliefObserver belief = ctx.findService(BeliefObserver.class).orElse(null);
-        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), now);
-        RouteFollower.Status status = route.step(map, position.xM(), position.yM(), position.yawRad(), xM, yM,
+        RouteFollower.Status status = route.step(map, position.xM(), position.yM(), position.yawRad(), parkX, parkY,
                 radiusM / 2 * 0.9, radiusM, now, driving);
         if (belief != null && route.planned()) {
             belief.route(ctx.iteration(), scenario(), route.waypointsX(), route.waypointsY());
@@ -130,13 +144,15 @@ public final class ReturnToStart extends Rule {
             if (noRouteSinceMs < 0) {
                 noRouteSinceMs = now;
             }
-            gaveUp = now - noRouteSinceMs >= NO_ROUTE_MS;
+            if (now - noRouteSinceMs >= NO_ROUTE_MS) {
+                giveUp(map, radiusM);
+            }
             ctx.suggest(Steering.STOP);
             return;
         }
         noRouteSinceMs = -1;
         if (drivenMs > budgetMs) {
-            gaveUp = true; // a start it cannot get to: it stays out of the way where it is rather than roam
+            giveUp(map, radiusM); // a start it cannot get to: it stays near where it is rather than roam
             ctx.suggest(Steering.STOP);
             return;
         }
@@ -148,7 +164,32 @@ public final class ReturnToStart extends Rule {
         ctx.suggest(Steering.goTo(position.xM(), position.yM(), position.yawRad(), route.targetX(), route.targetY(), profile, behindSide));
     }
 
-    /** @return whether the robot stands at its start */
+    /**
+     * The place it drove for cannot be got to: the first time, it parks at the place nearest to where it stands
+     * that closes no way (it may stand in a doorway); the second, it stops for good.
+     */
+    private void giveUp(OccupancyMap map, double radiusM) {
+        if (placeChoice == 1) {
+            double[] place = ParkingPlace.near(map, position.xM(), position.yM(), radiusM);
+            placeChoice = 2;
+            if (position.distanceTo(place[0], place[1]) >= radiusM / 2) {
+                parkX = place[0];
+                parkY = place[1];
+                route = new RouteFollower();
+                noRouteSinceMs = -1;
+                budgetMs = -1;
+                return;
+            }
+        }
+        gaveUp = true;
+    }
+
+    /** @return where it parks (or drives to park): {x, y}, metres */
+    public double[] place() {
+        return new double[] {parkX, parkY};
+    }
+
+    /** @return whether the robot stands at its parking place */
     public boolean parked() {
         return parked;
     }
