@@ -10,9 +10,9 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * which another robot could pass fall apart into more than one piece within {@value #WINDOW_M} m:
  * a gap's mouth, a doorway, the narrow end of a corridor. In an open room or against a corridor's
  * wall they stay one piece (one can go round). Only the map decides, and only its seen cells: a
- * way is made of free cells seen by the rays, kept from occupied cells by a body and a margin and
- * from unknown cells by half a body (a wall's face fades from the map, the arena's rim is hardly
- * ever hit: the edge of the free cells is where the wall is).
+ * way is made of free cells seen by the rays, kept from occupied and from unknown cells alike by a
+ * body and a margin (a wall's face fades from the map and the arena's rim is hardly ever hit: the
+ * edge of the free cells is where the wall is).
  *
  * <p>All distances in metres; cells are the map's ({@link OccupancyMap#CELL_M}). Pure and
  * deterministic: the same map and point give the same place.
@@ -28,7 +28,7 @@ public final class ParkingPlace {
     /** What the parked body keeps from an occupied cell, beyond its radius, metres. */
     static final double PARK_MARGIN_M = 0.08;
     /** What another robot's centre keeps from the parked one's, beyond the two radii, metres. */
-    static final double BODY_GAP_M = 0.3;
+    static final double BODY_GAP_M = 0.4;
 
     private ParkingPlace() {
     }
@@ -61,7 +61,6 @@ public final class ParkingPlace {
         java.util.Arrays.fill(roomy, true);
         // a wall's face fades from the map and the arena's rim is hardly ever hit: the free cells' edge is the wall
         double unknownBodyKeep = radiusM / OccupancyMap.CELL_M;
-        double unknownPassKeep = radiusM / 2 / OccupancyMap.CELL_M;
         int reach = (int) Math.ceil(parkKeep);
         for (int c = 0; c < n * n; c++) {
             if (known[c]) {
@@ -71,7 +70,7 @@ public final class ParkingPlace {
             int ob = c / n;
             boolean occupied = map.get(ci - h + oa, cj - h + ob) == OccupancyMap.OCCUPIED;
             double roomyKeep = occupied ? parkKeep : unknownBodyKeep;
-            double passingKeep = occupied ? passKeep : unknownPassKeep;
+            double passingKeep = passKeep;
             for (int db = -reach; db <= reach; db++) {
                 for (int da = -reach; da <= reach; da++) {
                     int a = oa + da;
