@@ -10,10 +10,12 @@ import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.ParkingPlace;
 import org.proactiverobotics.engine.navigation.RouteFollower;
+import org.proactiverobotics.engine.tables.DistanceScan;
 import org.proactiverobotics.engine.tables.MissionTables;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 import org.proactiverobotics.engine.tables.PoseEstimate;
 import org.proactiverobotics.engine.tables.PoseEstimateTable;
+import org.proactiverobotics.engine.tables.SensorReadings;
 
 /**
  * In a world shared with other robots, once every checkpoint is reached: drives back to where the robot started
@@ -38,6 +40,14 @@ public final class ReturnToStart extends Rule {
     static final long BUDGET_BASE_MS = 60_000;
     /** The drive back may take this many times the straight line at top speed, on top of the fixed part. */
     static final double BUDGET_FACTOR = 4.0;
+    /** Something a ray finds this near the rim, nearer than when the robot stopped there, stands beside it, metres. */
+    static final double BESIDE_M = 0.5;
+    /** How long something may stand beside a robot that is done before it steps aside, simulated ms. */
+    static final long STEP_ASIDE_MS = 8_000;
+    /** How far away from what stands beside it a robot steps aside (then to the nearest parking place there), metres. */
+    static final double STEP_ASIDE_M = 0.8;
+    /** At most this many steps aside: two robots that are done do not chase each other round the floor. */
+    static final int MAX_STEPS_ASIDE = 3;
 
     private double xM;
     private double yM;
@@ -61,6 +71,12 @@ public final class ReturnToStart extends Rule {
     private long budgetMs = -1;
     /** The simulated time of the last iteration, ms (-1: none yet). */
     private long lastMs = -1;
+    /** The scan when it stopped at its place (or gave up), metres from the rim per ray (null: not standing). */
+    private double[] standScan;
+    /** Since when something has stood beside it, simulated ms (-1: nothing). */
+    private long besideSinceMs = -1;
+    /** How many times it stepped aside. */
+    private int stepsAside;
 
     private transient PoseEstimate position;
     private transient boolean newCheckpoint;
@@ -107,12 +123,15 @@ public final class ReturnToStart extends Rule {
             drivenMs += now - lastMs;
         }
         lastMs = now;
-        if (gaveUp) {
-            ctx.suggest(Steering.STOP);
-            return;
-        }
         DriveProfile profile = ctx.findService(DriveProfile.class).orElse(DriveProfile.DEFAULT);
         double radiusM = profile.axleWidthM() / 2;
+        if (gaveUp) {
+            if (!besideTooLong(ctx, now) || !stepAside(ctx, now, radiusM)) {
+                ctx.suggest(Steering.STOP);
+                return;
+            }
+            gaveUp = false;
+        }
         OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), now);
         if (placeChoice == 0) {
             double[] place = ParkingPlace.near(map, xM, yM, radiusM);
@@ -126,9 +145,13 @@ public final class ReturnToStart extends Rule {
                 parked = true;
                 route = new RouteFollower();
                 noRouteSinceMs = -1;
+                standScan = null;
             }
-            ctx.suggest(Steering.STOP);
-            return;
+            if (!besideTooLong(ctx, now) || !stepAside(ctx, now, radiusM)) {
+                ctx.suggest(Steering.STOP);
+                return;
+            }
+            awayM = position.distanceTo(parkX, parkY);
         }
         if (parked || budgetMs < 0) { // setting out, first or again
             parked = false;
@@ -165,6 +188,78 @@ public final class ReturnToStart extends Rule {
     }
 
     /**
+     * Watches, while the robot stands, for something beside it that was not there when it stopped: another robot
+     * waiting for the way it stands in (it knows the others only by its rays).
+     *
+     * @return whether something has stood beside it for {@value #STEP_ASIDE_MS} ms
+     */
+    private boolean besideTooLong(RuleContext ctx, long now) {
+        DistanceScan scan = ctx.service(SensorReadings.class).newestScan().orElse(null);
+        if (scan == null || stepsAside >= MAX_STEPS_ASIDE) {
+            return false;
+        }
+        if (standScan == null || standScan.length != scan.distancesM().length) {
+            standScan = scan.distancesM().clone();
+            besideSinceMs = -1;
+            return false;
+        }
+        if (besideDirection(scan) == null) {
+            besideSinceMs = -1;
+            return false;
+        }
+        if (besideSinceMs < 0) {
+            besideSinceMs = now;
+        }
+        return now - besideSinceMs >= STEP_ASIDE_MS;
+    }
+
+    /** @return the unit vector, world frame, from what stands beside the robot toward the robot, or null if nothing does */
+    private double[] besideDirection(DistanceScan scan) {
+        double sx = 0;
+        double sy = 0;
+        int rays = 0;
+        for (int k = 0; k < scan.distancesM().length; k++) {
+            double d = scan.distancesM()[k];
+            if (d < BESIDE_M && d < standScan[k] - 0.1) { // nearer than what stood there: it came
+                double a = position.yawRad() + scan.anglesRad()[k];
+                sx -= Math.cos(a);
+                sy -= Math.sin(a);
+                rays++;
+            }
+        }
+        double len = Math.hypot(sx, sy);
+        return rays == 0 || len < 1e-9 ? null : new double[] {sx / len, sy / len};
+    }
+
+    /**
+     * Steps aside: parks at the place nearest to a point {@value #STEP_ASIDE_M} m away from what stands beside it.
+     *
+     * @return whether it found such a place away from where it stands (then it drives there)
+     */
+    private boolean stepAside(RuleContext ctx, long now, double radiusM) {
+        DistanceScan scan = ctx.service(SensorReadings.class).newestScan().orElse(null);
+        double[] away = scan == null ? null : besideDirection(scan);
+        besideSinceMs = -1;
+        standScan = null;
+        if (away == null) {
+            return false;
+        }
+        stepsAside++;
+        OccupancyMap map = ctx.service(KnownMap.class).current(ctx.iteration(), now);
+        double[] place = ParkingPlace.near(map, position.xM() + STEP_ASIDE_M * away[0],
+                position.yM() + STEP_ASIDE_M * away[1], radiusM);
+        if (position.distanceTo(place[0], place[1]) < LEAVE_M) {
+            return false;
+        }
+        parkX = place[0];
+        parkY = place[1];
+        route = new RouteFollower();
+        noRouteSinceMs = -1;
+        budgetMs = -1;
+        return true;
+    }
+
+    /**
      * The place it drove for cannot be got to: the first time, it parks at the place nearest to where it stands
      * that closes no way (it may stand in a doorway); the second, it stops for good.
      */
@@ -182,6 +277,7 @@ public final class ReturnToStart extends Rule {
             }
         }
         gaveUp = true;
+        standScan = null; // what stands beside it is judged from here
     }
 
     /** @return where it parks (or drives to park): {x, y}, metres */
