@@ -27,7 +27,10 @@ import org.proactiverobotics.engine.tables.SensorReadings;
  * finds a way there for {@value #NO_ROUTE_MS} ms (another robot stands on it, or it is walled in), or the drive
  * has taken longer than {@link #budgetMs} allows, it parks instead at the nearest such place to where it stands
  * (once), and failing that too gives up for good and stops where it is: no endless re-planning, no battery
- * spent going nowhere. Clones itself to the run's end; a checkpoint not yet reached (the
+ * spent going nowhere. Standing there (or given up), when its rays find something within {@value #BESIDE_M} m that
+ * was not there when it stopped for {@value #STEP_ASIDE_MS} ms (another robot waiting for the way it stands in),
+ * it steps aside to the parking place nearest a point {@value #STEP_ASIDE_M} m away from it, at most
+ * {@value #MAX_STEPS_ASIDE} times. Clones itself to the run's end; a checkpoint not yet reached (the
  * mission got a new one) hands back to {@link GetCheckpoint}.
  */
 public final class ReturnToStart extends Rule {
