@@ -145,17 +145,27 @@ class BatteryMonitorScenarioTest {
 
     /**
      * Past the point of no return on the last leg (the station 10 m behind), the last checkpoint 2.4 m ahead: the
-     * robot goes on for it, then circles short of it (a route through a wall the map let go), 0.06 m and 0.12 % a step.
+     * robot goes on for it from x = 0.8 with {@code startPct} (0.1 m and 0.2 % a step), then circles short of it (a
+     * route through a wall the map let go), 0.06 m and 0.12 % a step.
      *
      * @return the battery left when the monitor sent it to the station, percent (0: not before 5 %)
      */
-    private static double sentBackCirclingShortOfTheLastCheckpoint(boolean shared) {
+    private static double sentBackCirclingShortOfTheLastCheckpoint(boolean shared, double startPct, boolean whileApproaching) {
         try (ScenarioKit kit = kit(shared)) {
             kit.mission().station(-10, 0, 100).checkpoint(3.2, 0);
             // from x = 0.8 with 30 %: the way back needs 2 %/m x 1.25 x 10.8 m + 5 = 32 %, the checkpoint 11 %: on for it
-            drive(kit, 0.8, 30, 2.0);
-            assertThat(kit.scheduled()).as("goes on for the last checkpoint").doesNotContain("BatteryMonitor/MoveToRecharge");
-            double pct = 26;
+            for (int i = 0; i <= 20; i++) {
+                double pct = startPct - i * 0.2;
+                kit.robot().gps(0.8 + i * 0.1, 0).headingDeg(0).battery(pct);
+                kit.step();
+                if (kit.scheduled().contains("BatteryMonitor/MoveToRecharge")) {
+                    return whileApproaching ? pct : 0;
+                }
+            }
+            if (whileApproaching) {
+                return 0;
+            }
+            double pct = startPct - 4;
             for (int i = 0; pct > 5; i++) {
                 double a = i * 0.2;
                 pct -= 0.12;
@@ -170,10 +180,17 @@ class BatteryMonitorScenarioTest {
     }
 
     @Test
-    void amongOtherRobotsGoingOnForTheLastCheckpointPastTheWayBackEndsWhenItsCostIsSpent() {
+    void amongOtherRobotsGoingOnForTheLastCheckpointPastTheWayBackEndsWhileTheStationIsStillWithinReach() {
         // a lone robot's monitor as it always was: on while what is left covers the checkpoint (7 to 9 % from the circle)
-        assertThat(sentBackCirclingShortOfTheLastCheckpoint(false)).isBetween(5.0, 9.5);
-        // finishing was to cost 2 %/m x 1.25 x 2.4 m = 6 % from 30 %: spent by 24 %, the station then, with what is left
-        assertThat(sentBackCirclingShortOfTheLastCheckpoint(true)).isBetween(23.5, 24.0);
+        assertThat(sentBackCirclingShortOfTheLastCheckpoint(false, 30, true)).as("a lone robot goes on for it").isZero();
+        assertThat(sentBackCirclingShortOfTheLastCheckpoint(false, 30, false)).isBetween(5.0, 9.5);
+        // issue 34: among others, having set out with the station within reach at its least cost (2 %/m x 10.8 m + 5 =
+        // 26.6 % at x = 0.8, with 30 %), it goes on only while it still is: by x = 1.65, 28.3 % = 2 %/m x 11.65 m + 5,
+        // the station then (its budget, 6 %, would have sent it at 24 %, with less than the way back costs)
+        assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 30, true)).isBetween(27.5, 29.0);
+        // set out with less (25 %), the station already out of reach: on until what finishing was to cost, 2 %/m x 1.25 x
+        // 2.4 m = 6 %, is spent, by 19 %
+        assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 25, true)).as("goes on for it").isZero();
+        assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 25, false)).isBetween(18.5, 19.0);
     }
 }

@@ -108,12 +108,28 @@ class MovingObstaclesTest {
     }
 
     @Test
-    void inASharedWorldWhatMovedInFadesOutOfViewOnceAndIsAWallWhenItIsThereAgain() {
+    void inASharedWorldWhatMovedInFadesOutOfViewOnceAndIsAWallWhenItIsThereAgainOnAWall() {
         try (ScenarioKit kit = ScenarioKit.builder().sharedWorld().builtIn(MappingScenario.NAME).start()) {
+            // a wall for good right behind the hit cell, 0.85 m long: the hit cell is part of its face
+            OccupancyMap map = OccupancyMap.empty();
+            int[] c = hitCell();
+            for (int j = c[1] - 8; j <= c[1] + 8; j++) {
+                map.set(c[0] + 1, j, (byte) (OccupancyMap.FREE + OccupancyMap.CONFIRMED));
+            }
+            new JdbcRobotTables(kit.database(), ScenarioKit.ROBOT_ID).writeChunks(new ArrayList<MapChunk>(map.takeChanged()), 0);
             assertThat(evidenceOutOfViewAfterItMovedIn(kit, 60)).as("a robot that came and, unseen, may have left: faded")
                     .isZero();
-            // seen free and hit again at the very same cell: a wall whose surface a grazing ray had taken free, not a robot
+            // seen free and hit again at the very same cell on a wall's face: a wall whose surface a grazing ray had taken free
             assertThat(evidenceOutOfViewAfterItMovedIn(kit, 60)).as("there again: kept out of view").isPositive();
+        }
+    }
+
+    @Test
+    void inASharedWorldARobotSizedBodyThereAgainFadesAgain() {
+        try (ScenarioKit kit = ScenarioKit.builder().sharedWorld().builtIn(MappingScenario.NAME).start()) {
+            assertThat(evidenceOutOfViewAfterItMovedIn(kit, 60)).isZero();
+            // alone, no wider than a robot: another robot that stood there again (at a checkpoint, in a door), not a wall
+            assertThat(evidenceOutOfViewAfterItMovedIn(kit, 60)).as("there again: faded again").isZero();
         }
     }
 

@@ -31,7 +31,8 @@ import org.proactiverobotics.engine.tables.Station;
  * stretched by the detour factor (1.25 until a trip to the station has measured a longer one, see
  * {@link DrainEstimate#detour()}), plus a reserve. On the last leg the robot goes on past it when
  * the route planned to the last checkpoint is shorter than the way back and within reach (in a
- * shared world only until what that was to cost is spent).</li>
+ * shared world only until what that was to cost is spent, and while what is left still covers the
+ * way back at its least cost).</li>
  * <li><b>The leg</b>: can the robot reach its next checkpoint and still get to the station from
  * there (for the last checkpoint: just reach it)? Checked only when a full charge could promise
  * the leg from the station (a recharge then helps), and not on the first leg after a recharge:
@@ -77,6 +78,8 @@ public final class BatteryMonitor extends Rule {
     private double finishFromPct;
     /** What finishing was to cost then, percent. */
     private double finishCostPct;
+    /** Whether what was left then covered the way back at its least cost (no detour) and the reserve. */
+    private boolean finishKeepsStation;
 
     private transient PoseEstimate position;
     private transient BatteryState battery;
@@ -172,17 +175,24 @@ public final class BatteryMonitor extends Rule {
      * still within what it was to cost when the robot went on for it: a route through cells the map
      * lost (walls the rays took free) can hold the robot circling before a wall while the
      * battery drains; once the cost is spent without the checkpoint reached, the station it is.
+     * A robot that went on with the station still within reach (what was left covered the way back
+     * at its least cost, cost per metre × the way back without detour, and the reserve) goes to the
+     * station as soon as it no longer is, whatever the budget.
      */
-    private boolean finishWithinBudget(RuleContext ctx, Checkpoint last, double finishPct) {
+    private boolean finishWithinBudget(RuleContext ctx, Checkpoint last, double finishPct, double perMetre) {
         if (ctx.findService(SharedWorld.class).isEmpty()) {
             return true;
         }
+        double stationPct = perMetre * wayBackM(ctx) + RESERVE_PCT;
         if (finishSeq != last.seq()) {
             finishSeq = last.seq();
             finishFromPct = battery.levelPct();
             finishCostPct = finishPct - RESERVE_PCT;
+            finishKeepsStation = battery.levelPct() >= stationPct;
         }
-        return battery.levelPct() >= finishFromPct - finishCostPct;
+        // set out with the station still within reach, it goes back before the station is out of reach: a finish that
+        // then failed left robots stopped short of the station till the time limit (corridors worlds 11 and 12)
+        return battery.levelPct() >= finishFromPct - finishCostPct && (!finishKeepsStation || battery.levelPct() >= stationPct);
     }
 
     /**
@@ -215,7 +225,7 @@ public final class BatteryMonitor extends Rule {
         if (battery.levelPct() < backPct) {
             if (last) {
                 double finishPct = perMetre * detour * plannedWayToM(ctx, next) + RESERVE_PCT;
-                if (finishPct <= backPct && battery.levelPct() >= finishPct && finishWithinBudget(ctx, next, finishPct)) {
+                if (finishPct <= backPct && battery.levelPct() >= finishPct && finishWithinBudget(ctx, next, finishPct, perMetre)) {
                     neededPct = finishPct;
                     return false; // the last checkpoint is nearer than the station by route, and within reach: finishing is the safer way
                 }

@@ -160,13 +160,13 @@ public final class UpdateMap extends Rule {
             double reach = radiusM + Math.min(d, scan.rangeM());
             double ex = xM + Math.cos(a) * reach;
             double ey = yM + Math.sin(a) * reach;
-            traverse(map, xM, yM, ex, ey, hit, hit && d < scan.rangeM() * CLOSE_HIT, moving);
+            traverse(map, xM, yM, ex, ey, hit, hit && d < scan.rangeM() * CLOSE_HIT, radiusM, moving);
         }
     }
 
     /** Walks the cells from (x0, y0) to (x1, y1) (Amanatides-Woo): free on the way, the last occupied on a hit. */
     private static void traverse(OccupancyMap map, double x0, double y0, double x1, double y1, boolean hit, boolean close,
-                                 MovingCells moving) {
+                                 double radiusM, MovingCells moving) {
         int i = OccupancyMap.cell(x0);
         int j = OccupancyMap.cell(y0);
         int ei = OccupancyMap.cell(x1);
@@ -206,7 +206,7 @@ public final class UpdateMap extends Rule {
             left = Math.min(nextX, nextY);
         }
         if (moving != null && hit && map.get(ei, ej) == OccupancyMap.FREE) {
-            moving.addWithNeighbours(map, ei, ej); // seen free, now hit: something moved in
+            moving.addWithNeighbours(map, ei, ej, radiusM); // seen free, now hit: something moved in
         }
         if (close) {
             map.confirm(ei, ej);
