@@ -1,6 +1,8 @@
 package org.proactiverobotics.engine.navigation;
 
 import java.util.ArrayDeque;
+import java.util.Arrays;
+
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
 /**
@@ -30,6 +32,10 @@ public final class ParkingPlace {
     /** What another robot's centre keeps from the parked one's, beyond the two radii, metres. */
     static final double BODY_GAP_M = 0.4;
 
+    /** The four neighbours' steps, x and y: a ring of equal steps, no diagonal leak. */
+    private static final int[] STEP_A = {1, -1, 0, 0};
+    private static final int[] STEP_B = {0, 0, 1, -1};
+
     private ParkingPlace() {
     }
 
@@ -57,8 +63,8 @@ public final class ParkingPlace {
         double passKeep = (radiusM + PASS_MARGIN_M) / OccupancyMap.CELL_M;
         boolean[] passable = new boolean[n * n];
         boolean[] roomy = new boolean[n * n];
-        java.util.Arrays.fill(passable, true);
-        java.util.Arrays.fill(roomy, true);
+        Arrays.fill(passable, true);
+        Arrays.fill(roomy, true);
         // a wall's face fades from the map and the arena's rim is hardly ever hit: the free cells' edge is the wall
         double unknownBodyKeep = radiusM / OccupancyMap.CELL_M;
         int reach = (int) Math.ceil(parkKeep);
@@ -70,7 +76,6 @@ public final class ParkingPlace {
             int ob = c / n;
             boolean occupied = map.get(ci - h + oa, cj - h + ob) == OccupancyMap.OCCUPIED;
             double roomyKeep = occupied ? parkKeep : unknownBodyKeep;
-            double passingKeep = passKeep;
             for (int db = -reach; db <= reach; db++) {
                 for (int da = -reach; da <= reach; da++) {
                     int a = oa + da;
@@ -82,7 +87,7 @@ public final class ParkingPlace {
                     if (d2 <= roomyKeep * roomyKeep) {
                         roomy[b * n + a] = false;
                     }
-                    if (d2 <= passingKeep * passingKeep) {
+                    if (d2 <= passKeep * passKeep) {
                         passable[b * n + a] = false;
                     }
                 }
@@ -91,7 +96,7 @@ public final class ParkingPlace {
         // the candidates in order of their distance along passable cells from the wanted point
         int searchCells = (int) Math.round(SEARCH_M / OccupancyMap.CELL_M);
         int[] dist = new int[n * n];
-        java.util.Arrays.fill(dist, -1);
+        Arrays.fill(dist, -1);
         ArrayDeque<Integer> queue = new ArrayDeque<>();
         int start = h * n + h;
         dist[start] = 0;
@@ -107,9 +112,9 @@ public final class ParkingPlace {
             if (dist[c] >= searchCells) {
                 continue;
             }
-            for (int d = 0; d < 4; d++) { // four neighbours: a ring of equal steps, no diagonal leak
-                int na = a + (d == 0 ? 1 : d == 1 ? -1 : 0);
-                int nb = b + (d == 2 ? 1 : d == 3 ? -1 : 0);
+            for (int d = 0; d < 4; d++) {
+                int na = a + STEP_A[d];
+                int nb = b + STEP_B[d];
                 int nc = nb * n + na;
                 if (dist[nc] < 0 && passable[nc]) {
                     dist[nc] = dist[c] + 1;
@@ -187,8 +192,8 @@ public final class ParkingPlace {
                 int a = c % n;
                 int b = c / n;
                 for (int d = 0; d < 4; d++) {
-                    int na = a + (d == 0 ? 1 : d == 1 ? -1 : 0);
-                    int nb = b + (d == 2 ? 1 : d == 3 ? -1 : 0);
+                    int na = a + STEP_A[d];
+                    int nb = b + STEP_B[d];
                     int nc = nb * n + na;
                     if (na >= 0 && nb >= 0 && na < n && nb < n && passable[nc] && near[nc] != stamp
                             && (na - pa) * (na - pa) + (nb - pb) * (nb - pb) <= ringCells * ringCells) {
@@ -214,8 +219,8 @@ public final class ParkingPlace {
                     seen = true;
                 }
                 for (int d = 0; d < 4; d++) {
-                    int na = a + (d == 0 ? 1 : d == 1 ? -1 : 0);
-                    int nb = b + (d == 2 ? 1 : d == 3 ? -1 : 0);
+                    int na = a + STEP_A[d];
+                    int nb = b + STEP_B[d];
                     if (inWindow(na, nb, pa, pb) && mark[nb * n + na] != stamp) {
                         mark[nb * n + na] = stamp;
                         stack[top++] = nb * n + na;

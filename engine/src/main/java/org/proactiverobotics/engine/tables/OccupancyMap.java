@@ -462,7 +462,9 @@ public final class OccupancyMap {
     }
 
     /**
-     * Whether moving to a point would bring the body closer to an occupied cell than it may come.
+     * Whether moving to a point would bring the body closer to an occupied cell than it may come:
+     * {@link #approached} for occupied cells, chunk by chunk. A chunk with none is passed, and in the
+     * others a cell's byte is read before its distances are worked out (6 % of a floor's mission, JFR).
      *
      * @param fromX where the body is now, x, metres
      * @param fromY its y, metres
@@ -472,15 +474,6 @@ public final class OccupancyMap {
      * @return whether an occupied cell's centre lies within {@code keepM} of the point and closer to it than to where the body is
      */
     public boolean occupiedApproached(double fromX, double fromY, double px, double py, double keepM) {
-        return occupiedApproachedByChunk(fromX, fromY, px, py, keepM); // it passes the chunks with no occupied cell itself
-    }
-
-    /**
-     * {@link #approached} for occupied cells, chunk by chunk: a chunk with none is passed, and in the
-     * others a cell's byte is read before its distances are worked out (a wall is a few of a box's
-     * cells; this was 6 % of a floor's mission, JFR). The same answer, in another order.
-     */
-    private boolean occupiedApproachedByChunk(double fromX, double fromY, double px, double py, double keepM) {
         int i0 = cell(px - keepM);
         int i1 = cell(px + keepM);
         int j0 = cell(py - keepM);

@@ -179,11 +179,11 @@ public final class BatteryMonitor extends Rule {
      * at its least cost, cost per metre × the way back without detour, and the reserve) goes to the
      * station as soon as it no longer is, whatever the budget.
      */
-    private boolean finishWithinBudget(RuleContext ctx, Checkpoint last, double finishPct, double perMetre) {
+    private boolean finishWithinBudget(RuleContext ctx, Checkpoint last, double finishPct, double perMetre, double backM) {
         if (ctx.findService(SharedWorld.class).isEmpty()) {
             return true;
         }
-        double stationPct = perMetre * wayBackM(ctx) + RESERVE_PCT;
+        double stationPct = perMetre * backM + RESERVE_PCT;
         if (finishSeq != last.seq()) {
             finishSeq = last.seq();
             finishFromPct = battery.levelPct();
@@ -219,13 +219,14 @@ public final class BatteryMonitor extends Rule {
         }
         double perMetre = drain.pctPerMetre();
         double detour = drain.detour();
-        double backPct = perMetre * detour * wayBackM(ctx) + RESERVE_PCT;
+        double backM = wayBackM(ctx);
+        double backPct = perMetre * detour * backM + RESERVE_PCT;
         boolean last = next.seq() == checkpoints.get(checkpoints.size() - 1).seq();
         neededPct = backPct;
         if (battery.levelPct() < backPct) {
             if (last) {
                 double finishPct = perMetre * detour * plannedWayToM(ctx, next) + RESERVE_PCT;
-                if (finishPct <= backPct && battery.levelPct() >= finishPct && finishWithinBudget(ctx, next, finishPct, perMetre)) {
+                if (finishPct <= backPct && battery.levelPct() >= finishPct && finishWithinBudget(ctx, next, finishPct, perMetre, backM)) {
                     neededPct = finishPct;
                     return false; // the last checkpoint is nearer than the station by route, and within reach: finishing is the safer way
                 }

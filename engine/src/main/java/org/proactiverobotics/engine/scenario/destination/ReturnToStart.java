@@ -254,12 +254,17 @@ public final class ReturnToStart extends Rule {
         if (position.distanceTo(place[0], place[1]) < LEAVE_M) {
             return false;
         }
+        setOutFor(place);
+        return true;
+    }
+
+    /** Drives for a new parking place: a new route, watch and budget. */
+    private void setOutFor(double[] place) {
         parkX = place[0];
         parkY = place[1];
         route = new RouteFollower();
         noRouteSinceMs = -1;
         budgetMs = -1;
-        return true;
     }
 
     /**
@@ -271,11 +276,7 @@ public final class ReturnToStart extends Rule {
             double[] place = ParkingPlace.near(map, position.xM(), position.yM(), radiusM);
             placeChoice = 2;
             if (position.distanceTo(place[0], place[1]) >= radiusM / 2) {
-                parkX = place[0];
-                parkY = place[1];
-                route = new RouteFollower();
-                noRouteSinceMs = -1;
-                budgetMs = -1;
+                setOutFor(place);
                 return;
             }
         }
