@@ -69,6 +69,13 @@ class BadInputTest extends CommandLineTest {
         }
         assertThat(run("validate", "--world", world.toString())).as(err.toString()).isEqualTo(2);
         assertThat(err.toString()).contains("invalid world file").contains(problem);
+        List<String> lines = err.toString().lines().toList();
+        if (lines.size() == 1) {
+            assertThat(lines.get(0)).as("one problem, one line").contains(": invalid world file: ");
+        } else {
+            assertThat(lines.get(0)).as("several problems: a header counting them, then one line each")
+                    .endsWith(": invalid world file, " + (lines.size() - 1) + " problems:");
+        }
 
         Path runOut = tmp.resolve("run-out");
         assertThat(run("run", "--world", world.toString(), "--out", runOut.toString(), "--quiet")).isEqualTo(2);

@@ -365,9 +365,7 @@ public final class SweepCommand implements Callable<Integer> {
             } catch (WorldArgument.NoSuchWorld e) {
                 problems.add(e.getMessage());
             } catch (WorldValidationException e) {
-                int n = e.problems().size();
-                problems.add(e.source() + ": invalid world file, " + n + (n == 1 ? " problem:" : " problems:")
-                        + System.lineSeparator() + String.join(System.lineSeparator(), e.problems()));
+                problems.add(e.report());
             }
         }
         if (!problems.isEmpty()) {

@@ -31,9 +31,7 @@ final class WorldArgument {
         } catch (NoSuchWorld e) {
             err.println(e.getMessage());
         } catch (WorldValidationException e) {
-            int n = e.problems().size();
-            err.println(e.source() + ": invalid world file, " + n + (n == 1 ? " problem:" : " problems:"));
-            e.problems().forEach(err::println);
+            err.println(e.report());
         }
         err.flush();
         return null;

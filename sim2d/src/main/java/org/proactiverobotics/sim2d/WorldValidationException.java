@@ -32,6 +32,19 @@ public final class WorldValidationException extends RuntimeException {
         return sb.toString();
     }
 
+    /**
+     * @return what the command line prints: one line {@code SOURCE: invalid world file: PROBLEM} for
+     *         one problem; for several, a header {@code SOURCE: invalid world file, N problems:} and
+     *         one line per problem
+     */
+    public String report() {
+        if (problems.size() == 1) {
+            return source + ": invalid world file: " + problems.get(0);
+        }
+        return source + ": invalid world file, " + problems.size() + " problems:" + System.lineSeparator()
+                + String.join(System.lineSeparator(), problems);
+    }
+
     /** @return what was read (a file name, a resource, {@code <string>}) */
     public String source() {
         return source;
