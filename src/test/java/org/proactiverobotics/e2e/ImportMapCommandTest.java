@@ -179,6 +179,44 @@ class ImportMapCommandTest extends CommandLineTest {
         assertThat(out.toString()).contains("rooms: valid (");
     }
 
+    @Test
+    void aPictureAloneIsReadAsMapServerReadsItAtTheResolutionGivenAndCanBeNamedByTheWorld() throws Exception {
+        Path maps = Files.createDirectories(tmp.resolve("maps"));
+        Path yaml = twoRooms(maps);
+        Path picture = maps.resolve("rooms.pgm");
+        Path viaYaml = tmp.resolve("yaml.json");
+        Path alone = tmp.resolve("alone.json");
+        assertThat(run("import-map", "--map", yaml.toString(), "--out", viaYaml.toString(), "--seed", "3")).isZero();
+        assertThat(run("import-map", "--map", picture.toString(), "--out", alone.toString(), "--seed", "3", "--cell-m", "0.05"))
+                .as(err.toString()).isZero();
+        assertThat(out.toString()).contains(picture + ": 7.0 x 5.5 m (140 x 110 cells of 0.05 m)");
+        WorldSpec a = WorldFiles.load(alone);
+        WorldSpec y = WorldFiles.load(viaYaml);
+        // the YAML puts the lower-left corner at (-2.0, 1.5); alone it lies at (0, 0): the same walls, moved
+        assertThat(a.arena()).isEqualTo(WorldSpec.Arena.rectangle(7.0, 5.5, 3.5, 2.75));
+        assertThat(a.obstacles()).hasSameSizeAs(y.obstacles());
+        for (int k = 0; k < a.obstacles().size(); k++) {
+            WorldSpec.Obstacle o = a.obstacles().get(k);
+            WorldSpec.Obstacle p = y.obstacles().get(k);
+            assertThat(o.x() - 2.0).isCloseTo(p.x(), org.assertj.core.data.Offset.offset(1e-9));
+            assertThat(o.y() + 1.5).isCloseTo(p.y(), org.assertj.core.data.Offset.offset(1e-9));
+        }
+        assertThat(Solvability.of(a).solvable()).isTrue();
+
+        Path named = tmp.resolve("worlds").resolve("named.json");
+        assertThat(run("import-map", "--map", picture.toString(), "--out", named.toString(), "--seed", "3", "--cell-m", "0.05",
+                "--reference-map")).as(err.toString()).isZero();
+        JsonObject map = JsonParser.parseString(Files.readString(named)).getAsJsonObject().getAsJsonObject("map");
+        assertThat(map.get("file").getAsString()).isEqualTo("../maps/rooms.pgm");
+        assertThat(map.get("cellM").getAsDouble()).isEqualTo(0.05);
+        assertThat(WorldFiles.load(named)).isEqualTo(a);
+
+        // a world naming a picture without its scale is refused, naming the key
+        Files.writeString(named, Files.readString(named).replaceAll(",\\s*\"cellM\": 0.05", ""));
+        assertThat(run("validate", "--world", named.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("map.cellM: a picture alone has no scale: give cellM (metres a pixel)");
+    }
+
     static Stream<Arguments> badMaps() {
         return Stream.of(
                 Arguments.of("missing image", "image: gone.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n", null,
@@ -223,9 +261,12 @@ class ImportMapCommandTest extends CommandLineTest {
         Path map = twoRooms(tmp);
         Path world = tmp.resolve("w.json");
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--cell-m", "0.5")).isEqualTo(2);
-        assertThat(err.toString()).contains("--cell-m is for Moving AI maps (.map)");
+        assertThat(err.toString()).contains("--cell-m is for Moving AI maps (.map) and pictures alone (.pgm, .png)");
         assertThat(run("import-map", "--map", tmp.resolve("rooms.pgm").toString(), "--out", world.toString())).isEqualTo(2);
-        assertThat(err.toString()).contains("rooms.pgm: not a map this reads: give a ROS map_server YAML (.yaml) or a Moving AI map (.map)");
+        assertThat(err.toString()).contains("rooms.pgm: a picture alone has no scale: give --cell-m (metres a pixel");
+        assertThat(run("import-map", "--map", tmp.resolve("rooms.bmp").toString(), "--out", world.toString())).isEqualTo(2);
+        assertThat(err.toString()).contains("rooms.bmp: not a map this reads: give a ROS map_server YAML (.yaml), a Moving AI"
+                + " map (.map), or a picture (.pgm, .png) with --cell-m");
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--robot-radius", "0.5")).isEqualTo(2);
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--checkpoints", "0")).isEqualTo(2);
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--name", "my floor")).isEqualTo(2);

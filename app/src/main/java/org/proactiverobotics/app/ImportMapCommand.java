@@ -35,14 +35,16 @@ import picocli.CommandLine.Spec;
 @Command(name = "import-map",
         mixinStandardHelpOptions = true,
         description = {"Makes a map you already have into a world file: a ROS map_server map (its YAML, with a PGM or PNG"
-                + " picture) or a Moving AI grid map (.map). Blocked and unknown cells become merged boxes; a mission"
+                + " picture), a Moving AI grid map (.map), or a picture alone (a Stage bitmap: .pgm or .png, with --cell-m)."
+                + " Blocked and unknown cells become merged boxes; a mission"
                 + " (start, checkpoints far apart in other rooms, a station near the start) is drawn from the seed and"
                 + " checked solvable on the robot's footprint, as generate checks its worlds.",
                 "Exit codes: 0 written, 2 bad input or a bad map (nothing written), 3 the file could not be written."})
 public final class ImportMapCommand implements Callable<Integer> {
 
     @Option(names = "--map", paramLabel = "FILE", required = true,
-            description = "The map: a map_server YAML (.yaml, .yml) or a Moving AI map (.map).")
+            description = "The map: a map_server YAML (.yaml, .yml), a Moving AI map (.map), or a picture alone (.pgm, .png:"
+                    + " read as map_server reads one, origin 0 0, default thresholds; give --cell-m).")
     private Path map;
 
     @Option(names = "--out", paramLabel = "WORLD.json", required = true,
@@ -67,7 +69,8 @@ public final class ImportMapCommand implements Callable<Integer> {
     private String name;
 
     @Option(names = "--cell-m", paramLabel = "M",
-            description = "Metres a cell of a Moving AI map (default 0.5); a map_server YAML gives its own resolution.")
+            description = "Metres a cell of a Moving AI map (default 0.5) or a pixel of a picture alone (required);"
+                    + " a map_server YAML gives its own resolution.")
     private Double cellM;
 
     @Option(names = "--reference-map",
@@ -145,7 +148,7 @@ public final class ImportMapCommand implements Callable<Integer> {
         Path relative = dir.relativize(map.toAbsolutePath());
         JsonObject m = new JsonObject();
         m.addProperty("file", relative.toString().replace('\\', '/'));
-        if (MapFiles.isMovingAi(map) && cellM != null) {
+        if (MapFiles.takesCellSize(map) && cellM != null) {
             m.addProperty("cellM", cellM);
         }
         root.add("map", m);
@@ -174,11 +177,16 @@ public final class ImportMapCommand implements Callable<Integer> {
         if (cellM != null && !(cellM > 0 && cellM <= 100)) {
             return "--cell-m must be above 0 and at most 100 (metres a cell): " + cellM;
         }
-        if (cellM != null && !MapFiles.isMovingAi(map)) {
-            return "--cell-m is for Moving AI maps (.map); " + map + " gives its own resolution";
+        if (cellM != null && !MapFiles.takesCellSize(map)) {
+            return "--cell-m is for Moving AI maps (.map) and pictures alone (.pgm, .png); " + map + " gives its own resolution";
         }
-        if (!MapFiles.isMovingAi(map) && !MapFiles.isMapServer(map)) {
-            return map + ": not a map this reads: give a ROS map_server YAML (.yaml) or a Moving AI map (.map)";
+        if (!MapFiles.takesCellSize(map) && !MapFiles.isMapServer(map)) {
+            return map + ": not a map this reads: give a ROS map_server YAML (.yaml), a Moving AI map (.map), or a picture"
+                    + " (.pgm, .png) with --cell-m";
+        }
+        if (cellM == null && MapFiles.isPicture(map)) {
+            return map + ": a picture alone has no scale: give --cell-m (metres a pixel; 0.05 for most ROS maps), or its"
+                    + " map_server YAML";
         }
         if (Files.isDirectory(out)) {
             return "--out " + out + " is a folder: give the world file's name, such as " + out.resolve("world.json");

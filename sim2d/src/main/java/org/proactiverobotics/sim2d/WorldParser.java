@@ -301,8 +301,13 @@ final class WorldParser {
             problems.add("map.file: not a file name: " + f.getAsString());
             return null;
         }
-        if (o.get("cellM") != null && !MapFiles.isMovingAi(file)) {
-            problems.add("map.cellM: only a Moving AI map (.map) takes a cell size; a map_server YAML gives its resolution");
+        if (o.get("cellM") != null && !MapFiles.takesCellSize(file)) {
+            problems.add("map.cellM: only a Moving AI map (.map) or a picture alone (.pgm, .png) takes a cell size;"
+                    + " a map_server YAML gives its resolution");
+            return null;
+        }
+        if (o.get("cellM") == null && MapFiles.isPicture(file)) {
+            problems.add("map.cellM: a picture alone has no scale: give cellM (metres a pixel), or name its map_server YAML");
             return null;
         }
         try {

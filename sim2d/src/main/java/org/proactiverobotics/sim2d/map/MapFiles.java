@@ -4,8 +4,9 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 /**
- * Reads a map by its kind, told by the file's name: a ROS map_server YAML ({@code .yaml}, {@code .yml})
- * or a Moving AI grid map ({@code .map}).
+ * Reads a map by its kind, told by the file's name: a ROS map_server YAML ({@code .yaml}, {@code .yml}),
+ * a Moving AI grid map ({@code .map}), or a picture alone ({@code .pgm}, {@code .png}: a Stage bitmap,
+ * read as map_server reads one, at a resolution the caller gives).
  */
 public final class MapFiles {
 
@@ -17,7 +18,7 @@ public final class MapFiles {
 
     /**
      * @param file  the map
-     * @param cellM metres a cell for a Moving AI map (a map_server YAML gives its own resolution)
+     * @param cellM metres a cell for a Moving AI map or a picture alone (a map_server YAML gives its own resolution)
      * @return the map
      * @throws MapException naming the file and the problem
      */
@@ -28,7 +29,22 @@ public final class MapFiles {
         if (isMapServer(file)) {
             return MapServerMap.read(file);
         }
-        throw new MapException(file, "not a map this reads: give a ROS map_server YAML (.yaml) or a Moving AI map (.map)");
+        if (isPicture(file)) {
+            return MapServerMap.readPicture(file, cellM);
+        }
+        throw new MapException(file, "not a map this reads: give a ROS map_server YAML (.yaml), a Moving AI map (.map),"
+                + " or a picture (.pgm, .png) with its metres a pixel");
+    }
+
+    /** @return whether the file is named as a picture alone (PGM or PNG), whose scale the caller must give */
+    public static boolean isPicture(Path file) {
+        String n = name(file);
+        return n.endsWith(".pgm") || n.endsWith(".png");
+    }
+
+    /** @return whether the file's own contents do not give its cell size (a Moving AI map, a picture alone) */
+    public static boolean takesCellSize(Path file) {
+        return isMovingAi(file) || isPicture(file);
     }
 
     /** @return whether the file is named as a Moving AI map */

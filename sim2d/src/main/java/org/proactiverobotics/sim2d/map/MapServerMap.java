@@ -109,6 +109,25 @@ public final class MapServerMap {
             throw new MapException(yamlFile, "mode: must be trinary, scale or raw, got " + mode);
         }
         Path imageFile = yamlFile.toAbsolutePath().getParent().resolve(imageName);
+        return grid(imageFile, resolution, origin, negate, occupied, free, mode);
+    }
+
+    /**
+     * A picture without its YAML (a Stage bitmap, a floor plan drawn by hand) read as map_server reads
+     * one whose YAML gives only the image and its resolution: origin (0, 0), not negated, the default
+     * thresholds, trinary.
+     *
+     * @param picture        the PGM or PNG
+     * @param metresAPixel   the picture's resolution, metres a pixel
+     * @return the map
+     * @throws MapException naming the picture and the problem
+     */
+    public static MapReading readPicture(Path picture, double metresAPixel) {
+        return grid(picture, metresAPixel, new double[] {0, 0}, false, DEFAULT_OCCUPIED_THRESH, DEFAULT_FREE_THRESH, TRINARY);
+    }
+
+    private static MapReading grid(Path imageFile, double resolution, double[] origin, boolean negate, double occupied,
+                                   double free, String mode) {
         MapImage picture = MapImage.read(imageFile);
         double[] mean = mode.equals(TRINARY) ? picture.meanWithAlpha() : picture.meanWithoutAlpha();
         int w = picture.width();

@@ -87,6 +87,17 @@ class MapServerMapTest {
     }
 
     @Test
+    void aPictureAloneIsReadAsAYamlGivingOnlyItsImageAndResolution() throws IOException {
+        MapFixtures.p5(dir.resolve("m.pgm"), 4, 2, 255, ACROSS);
+        MapFixtures.greyPng(dir.resolve("m.png"), 4, 2, ACROSS);
+        Path bare = MapFixtures.yaml(dir.resolve("bare.yaml"), "image: m.pgm", "resolution: 0.05", "origin: [0, 0, 0]");
+        assertThat(MapFiles.read(dir.resolve("m.pgm"), 0.05).grid()).isEqualTo(MapServerMap.read(bare).grid());
+        assertThat(MapFiles.read(dir.resolve("m.png"), 0.05).grid()).isEqualTo(MapServerMap.read(bare).grid());
+        assertThat(MapFiles.takesCellSize(dir.resolve("m.png"))).isTrue();
+        assertThat(MapFiles.takesCellSize(dir.resolve("bare.yaml"))).isFalse();
+    }
+
+    @Test
     void plainAndRawPgmAndPngGiveTheSameMapAndSixteenBitPixelsScale() throws IOException {
         MapFixtures.p5(dir.resolve("raw.pgm"), 4, 2, 255, ACROSS);
         MapFixtures.p2(dir.resolve("plain.pgm"), 4, 2, 255, ACROSS);
