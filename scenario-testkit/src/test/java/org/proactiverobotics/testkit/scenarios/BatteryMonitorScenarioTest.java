@@ -3,7 +3,9 @@ package org.proactiverobotics.testkit.scenarios;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
+import org.proactiverobotics.engine.SharedMemory;
 import org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario;
+import org.proactiverobotics.engine.scenario.battery.MoveToRecharge;
 import org.proactiverobotics.testkit.ScenarioKit;
 
 /** Scenario 4 alone: BatteryMonitor sends the robot to recharge only when it must. */
@@ -192,5 +194,38 @@ class BatteryMonitorScenarioTest {
         // 2.4 m = 6 %, is spent, by 19 %
         assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 25, true)).as("goes on for it").isZero();
         assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 25, false)).isBetween(18.5, 19.0);
+    }
+
+    /**
+     * Sent to the station among other robots (as {@link #onTheWayToTheStationAt}), the robot is put at {@code x} with
+     * {@code pct} left and stands there for 10 s, the battery's command winning each step.
+     *
+     * @return how many places the route to the station closed meanwhile
+     */
+    private static int placesClosedStandingAt(double x, double pct) {
+        try (ScenarioKit kit = kit(true)) {
+            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
+            drive(kit, 0, 34, 2.0);
+            kit.robot().gps(x, 0).headingDeg(180).battery(pct);
+            for (int i = 0; i < 10_000 / 32; i++) {
+                kit.step();
+                // the decision scenario is not in the kit: what it would record, the battery's suggestion won
+                kit.memory().values().put(SharedMemory.LAST_DECISION, BATTERY + " " + kit.suggestion(BATTERY));
+            }
+            return kit.engine().engine().nextQueue().stream().filter(MoveToRecharge.class::isInstance)
+                    .map(MoveToRecharge.class::cast).findFirst().orElseThrow().closedPlaces().size();
+        }
+    }
+
+    /*
+     * Issue 34: stopped by its own rule for a way longer than the battery, the robot's route follower counted the time
+     * as a drive without progress and closed a place round the standing robot every 5 s, the way ever longer (rooms-029
+     * robot 2, corridors-021 robot 3, corridors-025 robot 2 stood so till the time limit).
+     */
+    @Test
+    void amongOtherRobotsStandingForTheBatteryIsNoStallOnTheWayToTheStation() {
+        assertThat(placesClosedStandingAt(5, 12)).as("stopped by its own rule: no place closed").isZero();
+        // driving for the way and getting nowhere still is a stall: a place closed after 5 s
+        assertThat(placesClosedStandingAt(-0.5, 20)).isPositive();
     }
 }
