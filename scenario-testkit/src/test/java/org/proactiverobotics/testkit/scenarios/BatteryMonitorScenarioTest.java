@@ -228,4 +228,39 @@ class BatteryMonitorScenarioTest {
         // driving for the way and getting nowhere still is a stall: a place closed after 5 s
         assertThat(placesClosedStandingAt(-0.5, 20)).isPositive();
     }
+
+    /**
+     * Drives away from the station (at x = -2) along +x from the origin, 0.1 m and 0.2 % a step from 22 %, on a map
+     * with nothing seen: the way back runs through cells no ray has seen.
+     *
+     * @return the battery left when the monitor sent the robot to the station, percent (0: not by x = 6)
+     */
+    private static double sentBackDrivingAwayOverUnseenCells(boolean shared) {
+        try (ScenarioKit kit = kit(shared)) {
+            kit.mission().station(-2, 0, 100).checkpoint(40, 0);
+            for (int i = 0; i <= 60; i++) {
+                double pct = 22 - i * 0.2;
+                kit.robot().gps(i * 0.1, 0).headingDeg(0).battery(pct);
+                kit.step();
+                if (kit.scheduled().contains("BatteryMonitor/MoveToRecharge")) {
+                    return pct;
+                }
+            }
+            return 0;
+        }
+    }
+
+    /*
+     * Issue 34: among other robots a way back through unseen cells turned out longer than planned (walls, other
+     * robots on it): robots turned back with 22 to 26 % and then stood short of the station, what was left less than
+     * the way found. Such a way is counted 1.5 times there, not 1.25.
+     */
+    @Test
+    void amongOtherRobotsAWayBackThroughUnseenCellsIsCountedLonger() {
+        // 2 %/m: a lone robot turns back where 2 x 1.25 x the way + 5 % is what is left (about x = 2.7, 16.6 %)
+        double lone = sentBackDrivingAwayOverUnseenCells(false);
+        assertThat(lone).isBetween(16.0, 17.0);
+        // among others where 2 x 1.5 x the way + 5 % is (about x = 2.2, 17.6 %): sooner, with more left
+        assertThat(sentBackDrivingAwayOverUnseenCells(true)).isBetween(lone + 0.8, 18.5);
+    }
 }
