@@ -18,6 +18,13 @@ public record SharedWorld(long noRouteMs) {
     /** The default wait for a route in a shared world: long enough for a robot in a door to charge and leave, simulated ms. */
     public static final long NO_ROUTE_MS = 60_000;
 
+    /**
+     * The shared memory's named value by which a rule that has found no route for a while asks the
+     * mapping to let go of the cells that moved in (another robot stood there) and that the map still
+     * holds occupied: a count, raised by one per request, so that the robot goes to look again.
+     */
+    public static final String LOOK_AGAIN = "lookAgain";
+
     /** The service as a fleet world's engines get it. */
     public static final SharedWorld DEFAULT = new SharedWorld(NO_ROUTE_MS);
 

@@ -3,7 +3,9 @@ package org.proactiverobotics.testkit.scenarios;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
+import org.proactiverobotics.engine.SharedMemory;
 import org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario;
+import org.proactiverobotics.engine.scenario.battery.MoveToRecharge;
 import org.proactiverobotics.testkit.ScenarioKit;
 
 /** Scenario 4 alone: BatteryMonitor sends the robot to recharge only when it must. */
@@ -192,5 +194,73 @@ class BatteryMonitorScenarioTest {
         // 2.4 m = 6 %, is spent, by 19 %
         assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 25, true)).as("goes on for it").isZero();
         assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 25, false)).isBetween(18.5, 19.0);
+    }
+
+    /**
+     * Sent to the station among other robots (as {@link #onTheWayToTheStationAt}), the robot is put at {@code x} with
+     * {@code pct} left and stands there for 10 s, the battery's command winning each step.
+     *
+     * @return how many places the route to the station closed meanwhile
+     */
+    private static int placesClosedStandingAt(double x, double pct) {
+        try (ScenarioKit kit = kit(true)) {
+            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
+            drive(kit, 0, 34, 2.0);
+            kit.robot().gps(x, 0).headingDeg(180).battery(pct);
+            for (int i = 0; i < 10_000 / 32; i++) {
+                kit.step();
+                // the decision scenario is not in the kit: what it would record, the battery's suggestion won
+                kit.memory().values().put(SharedMemory.LAST_DECISION, BATTERY + " " + kit.suggestion(BATTERY));
+            }
+            return kit.engine().engine().nextQueue().stream().filter(MoveToRecharge.class::isInstance)
+                    .map(MoveToRecharge.class::cast).findFirst().orElseThrow().closedPlaces().size();
+        }
+    }
+
+    /*
+     * Issue 34: stopped by its own rule for a way longer than the battery, the robot's route follower counted the time
+     * as a drive without progress and closed a place round the standing robot every 5 s, the way ever longer (rooms-029
+     * robot 2, corridors-021 robot 3, corridors-025 robot 2 stood so till the time limit).
+     */
+    @Test
+    void amongOtherRobotsStandingForTheBatteryIsNoStallOnTheWayToTheStation() {
+        assertThat(placesClosedStandingAt(5, 12)).as("stopped by its own rule: no place closed").isZero();
+        // driving for the way and getting nowhere still is a stall: a place closed after 5 s
+        assertThat(placesClosedStandingAt(-0.5, 20)).isPositive();
+    }
+
+    /**
+     * Drives away from the station (at x = -2) along +x from the origin, 0.1 m and 0.2 % a step from 22 %, on a map
+     * with nothing seen: the way back runs through cells no ray has seen.
+     *
+     * @return the battery left when the monitor sent the robot to the station, percent (0: not by x = 6)
+     */
+    private static double sentBackDrivingAwayOverUnseenCells(boolean shared) {
+        try (ScenarioKit kit = kit(shared)) {
+            kit.mission().station(-2, 0, 100).checkpoint(40, 0);
+            for (int i = 0; i <= 60; i++) {
+                double pct = 22 - i * 0.2;
+                kit.robot().gps(i * 0.1, 0).headingDeg(0).battery(pct);
+                kit.step();
+                if (kit.scheduled().contains("BatteryMonitor/MoveToRecharge")) {
+                    return pct;
+                }
+            }
+            return 0;
+        }
+    }
+
+    /*
+     * Issue 34: among other robots a way back through unseen cells turned out longer than planned (walls, other
+     * robots on it): robots turned back with 22 to 26 % and then stood short of the station, what was left less than
+     * the way found. Such a way is counted 1.5 times there, not 1.25.
+     */
+    @Test
+    void amongOtherRobotsAWayBackThroughUnseenCellsIsCountedLonger() {
+        // 2 %/m: a lone robot turns back where 2 x 1.25 x the way + 5 % is what is left (about x = 2.7, 16.6 %)
+        double lone = sentBackDrivingAwayOverUnseenCells(false);
+        assertThat(lone).isBetween(16.0, 17.0);
+        // among others where 2 x 1.5 x the way + 5 % is (about x = 2.2, 17.6 %): sooner, with more left
+        assertThat(sentBackDrivingAwayOverUnseenCells(true)).isBetween(lone + 0.8, 18.5);
     }
 }

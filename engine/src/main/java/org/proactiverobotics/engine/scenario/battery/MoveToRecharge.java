@@ -10,6 +10,7 @@ import org.proactiverobotics.engine.motion.CollisionReflex;
 import org.proactiverobotics.engine.motion.ControlPeriod;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
+import org.proactiverobotics.engine.navigation.ClosedPlaces;
 import org.proactiverobotics.engine.navigation.KnownMap;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.navigation.SharedWorld;
@@ -69,6 +70,8 @@ public final class MoveToRecharge extends Rule {
     /** Distance driven on the trip so far, metres. */
     private double tripDrivenM;
     private boolean arrived;
+    /** Whether the last command was this rule's own STOP for a way longer than the battery: time so spent is no stall. */
+    private boolean heldForBattery;
     /** When it arrived, simulated ms: it stays {@value #CHARGE_START_MS} ms, until the battery can say whether it charges. */
     private long arrivedMs;
 
@@ -141,7 +144,8 @@ public final class MoveToRecharge extends Rule {
         aimX = xM;
         aimY = yM;
         RouteFollower.Status status = route.step(map, position.xM(), position.yM(), position.yawRad(), xM, yM,
-                radiusM * AT_STATION_FRACTION * 0.9, profile.axleWidthM() / 2, position.simTimeMs(), drivingForThis(ctx));
+                radiusM * AT_STATION_FRACTION * 0.9, profile.axleWidthM() / 2, position.simTimeMs(),
+                drivingForThis(ctx) && !heldForBattery);
         if (status == RouteFollower.Status.TARGET) {
             aimX = route.targetX();
             aimY = route.targetY();
@@ -160,7 +164,8 @@ public final class MoveToRecharge extends Rule {
             tripPlannedM = route.remainingM(position.xM(), position.yM(), xM, yM);
         }
         String command;
-        if (cannotMakeIt(ctx)) {
+        heldForBattery = cannotMakeIt(ctx);
+        if (heldForBattery) {
             command = Steering.STOP; // what is left would run flat on the way the map knows: keep it, stopped, till the way opens
         } else if (status == RouteFollower.Status.BACK_OFF) {
             command = RouteFollower.backOffCommand(profile); // a stall in a narrow place: back off, then plan round it
@@ -196,6 +201,11 @@ public final class MoveToRecharge extends Rule {
         }
         double leftM = Math.max(0.0, route.remainingM(position.xM(), position.yM(), xM, yM) - radiusM * AT_STATION_FRACTION);
         return battery.levelPct() < drain.pctPerMetre() * leftM;
+    }
+
+    /** @return the places the route to the station closed after stalls (do not change) */
+    public ClosedPlaces closedPlaces() {
+        return route.closed();
     }
 
     /** Whether the robot drove for this trip last iteration: its command won, or the obstacle avoidance amended it. */

@@ -35,6 +35,15 @@ public final class MoveToCheckpoint extends Rule {
 
     /** How long no plan finds a route before the checkpoint is declared unreachable, simulated ms. */
     static final long NO_ROUTE_MS = 3_000;
+    /**
+     * In a shared world, after this long without a route the mapping is asked to let go of the cells
+     * other robots moved into ({@link SharedWorld#LOOK_AGAIN}), simulated ms: a blob a robot left where
+     * the map does not let it fade may be all that walls the way, and the robot, never going back to
+     * look, waited until the checkpoint was declared unreachable (6 robots in 120 worlds of four).
+     */
+    static final long LOOK_AGAIN_AFTER_MS = 5_000;
+    /** ... at most this many times per checkpoint. */
+    static final int LOOK_AGAIN_LIMIT = 3;
 
     private int seq;
     private double xM;
@@ -46,6 +55,10 @@ public final class MoveToCheckpoint extends Rule {
     private int behindSide;
     /** The simulated time since which no plan has found a route, ms (-1: the last plan found one). */
     private long noRouteSinceMs = -1;
+    /** How often this rule asked to look again. */
+    private int lookAgains;
+    /** The simulated time of the last ask, ms (-1: none): the next waits {@value #LOOK_AGAIN_AFTER_MS} ms after it. */
+    private long lookedAgainMs = -1;
 
     private transient PoseEstimate position;
     private transient boolean reached;
@@ -124,6 +137,9 @@ public final class MoveToCheckpoint extends Rule {
             }
             // in a shared world a robot standing in the only door is no wall: it is waited for longer
             long patienceMs = ctx.findService(SharedWorld.class).map(SharedWorld::noRouteMs).orElse(NO_ROUTE_MS);
+            if (ctx.findService(SharedWorld.class).isPresent()) {
+                lookAgain(ctx);
+            }
             if (position.simTimeMs() - noRouteSinceMs >= patienceMs) {
                 unreachable = true;
                 ctx.service(MissionTables.class).markUnreachable(seq, position.simTimeMs());
@@ -137,6 +153,22 @@ public final class MoveToCheckpoint extends Rule {
         noRouteSinceMs = -1;
         behindSide = Steering.turnSide(position.xM(), position.yM(), position.yawRad(), route.targetX(), route.targetY(), behindSide);
         ctx.suggest(Steering.goTo(position.xM(), position.yM(), position.yawRad(), route.targetX(), route.targetY(), profile, behindSide));
+    }
+
+    /**
+     * In a shared world, after {@value #LOOK_AGAIN_AFTER_MS} ms without a route (and as long after the
+     * last ask), asks the mapping to let go of the cells other robots moved into, at most
+     * {@value #LOOK_AGAIN_LIMIT} times: Nav2's clearing of the costmap, for the moving cells alone.
+     */
+    private void lookAgain(RuleContext ctx) {
+        long since = Math.max(noRouteSinceMs, lookedAgainMs);
+        if (lookAgains >= LOOK_AGAIN_LIMIT || position.simTimeMs() - since < LOOK_AGAIN_AFTER_MS) {
+            return;
+        }
+        lookAgains++;
+        lookedAgainMs = position.simTimeMs();
+        String asked = ctx.memory().values().get(SharedWorld.LOOK_AGAIN);
+        ctx.memory().values().put(SharedWorld.LOOK_AGAIN, Integer.toString(asked == null ? 1 : Integer.parseInt(asked) + 1));
     }
 
     /** What the engine knows of why: no plan on its map found a way to the checkpoint for so long. */

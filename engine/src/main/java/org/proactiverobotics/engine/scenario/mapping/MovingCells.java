@@ -146,6 +146,37 @@ final class MovingCells {
     }
 
     /**
+     * Lets go of every cell followed, and of every cell that faded once and is occupied again: the
+     * robot found no way left on its map, and a blob another robot left joined to a wall's end (not
+     * followed again, see {@link #smallBody}) may be all that walls it in. Taken free, the planner
+     * leads the robot to look, and its rays draw again what is still there.
+     *
+     * @param map the map
+     * @return how many occupied cells were taken free
+     */
+    int forget(OccupancyMap map) {
+        int freed = 0;
+        for (int k = 0; k < count; k++) {
+            freed += free(map, cells[k]);
+        }
+        count = 0;
+        for (long key : faded) {
+            freed += free(map, key);
+        }
+        return freed;
+    }
+
+    private static int free(OccupancyMap map, long key) {
+        int i = (int) (key >> 32);
+        int j = (int) key;
+        if (map.get(i, j) != OccupancyMap.OCCUPIED) {
+            return 0;
+        }
+        map.set(i, j, OccupancyMap.FREE);
+        return 1;
+    }
+
+    /**
      * Whether a cell and the cells joined to it fit in a square of {@code span} cells: a robot's side,
      * not a wall's. Occupied cells join through gaps of up to {@value #NEIGHBOURS} cells, cells that
      * faded once when they touch: a ray grazing a wall's face clears a cell, its hit then has the

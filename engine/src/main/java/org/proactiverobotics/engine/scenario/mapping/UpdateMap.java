@@ -58,6 +58,8 @@ public final class UpdateMap extends Rule {
     private long lastScanMs = -1;
     /** In a shared world, the cells something moved into (null for a lone robot: nothing saved). */
     private MovingCells moving;
+    /** The requests to look again ({@link SharedWorld#LOOK_AGAIN}) served so far. */
+    private int lookedAgain;
 
     /** The map as stored, loaded on the first run after a start or a resume. */
     private transient OccupancyMap map;
@@ -103,6 +105,11 @@ public final class UpdateMap extends Rule {
             if (moving == null) {
                 moving = new MovingCells();
             }
+            int asked = lookAgainAsked(ctx);
+            if (asked > lookedAgain) {
+                lookedAgain = asked;
+                moving.forget(map); // no way left on the map: what moved in goes, the rays draw again what is still there
+            }
             addScan(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan, moving);
             moving.decay(map, position.xM(), position.yM(), position.yawRad(), radiusM, scan);
         } else {
@@ -114,6 +121,12 @@ public final class UpdateMap extends Rule {
             table.writeChunks(changed, scan.simTimeMs());
             ctx.findService(BeliefObserver.class).ifPresent(b -> b.mapChanged(ctx.iteration(), changed));
         }
+    }
+
+    /** @return how often a rule asked to look again ({@link SharedWorld#LOOK_AGAIN}), 0 when none did */
+    static int lookAgainAsked(RuleContext ctx) {
+        String asked = ctx.memory().values().get(SharedWorld.LOOK_AGAIN);
+        return asked == null ? 0 : Integer.parseInt(asked);
     }
 
     @Override

@@ -115,4 +115,32 @@ class MovingCellsTest {
             assertThat(map.evidence(BEHIND, j)).as("8 cells (0.4 m) in a row, hit again: wider than a robot").isEqualTo(OccupancyMap.HIT);
         }
     }
+
+    /*
+     * Issue 34: a blob another robot left joined to a wall's end is not followed again, and when it was all that walled
+     * the way the robot stood without a route until its checkpoint was declared unreachable (corridors-011 robot 2).
+     * Asked to look again, the map lets go of it; the wall that was never seen free stays.
+     */
+    /** The wall's cells next to the blob, followed and faded with it the first time. */
+    private static final int NEIGHBOURS_FADED = MovingCells.NEIGHBOURS;
+
+    @Test
+    void lookingAgainLetsGoOfWhatMovedInAndKeepsTheWalls() {
+        OccupancyMap map = OccupancyMap.empty();
+        for (int j = -10; j < 0; j++) {
+            map.hit(BEHIND, j); // a wall's end, hit before any ray crossed it: not followed
+        }
+        MovingCells moving = new MovingCells();
+        seeFreeThenHitAndFade(map, moving, 0, 3);
+        seeFreeThenHitAndFade(map, moving, 0, 3);
+        assertThat(map.evidence(BEHIND, 1)).as("a blob joined to the wall's end, hit again: not followed").isEqualTo(OccupancyMap.HIT);
+
+        assertThat(moving.forget(map)).as("the blob's three cells go").isEqualTo(3);
+        for (int j = 0; j < 3; j++) {
+            assertThat(map.get(BEHIND, j)).isEqualTo(OccupancyMap.FREE);
+        }
+        for (int j = -10; j < -NEIGHBOURS_FADED; j++) {
+            assertThat(map.evidence(BEHIND, j)).as("the wall stays").isEqualTo(OccupancyMap.HIT);
+        }
+    }
 }
