@@ -1,9 +1,7 @@
 package org.proactiverobotics.engine.navigation;
 
 import java.lang.ref.WeakReference;
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
 /**
@@ -50,55 +48,76 @@ public final class RoutePlanner {
     static final int AREA_BLOCK = 64;
 
     /**
-     * A* search's arrays, kept by the thread from plan to plan: a cell's cost and parent count only
+     * A* search's arrays, kept by the thread from plan to plan: a cell's cost and way in count only
      * where its mark is this plan's, so that a plan costs what it searches, not its whole area.
      */
     private static final class Search {
         private static final ThreadLocal<Search> OF_THREAD = ThreadLocal.withInitial(Search::new);
         /**
-         * Each cell's entries side by side, {@value #FIELDS} ints a cell (one cache line holds a cell's
-         * all; six arrays of a floor's area were six lines and often six pages a neighbour, JFR):
-         * reached (cost and parent valid) where equal to {@link #stamp}, cost, parent, done where equal
-         * to the stamp, state known where equal to the stamp, and the state ({@link #info}).
+         * Each cell's mark and cost side by side, {@value #FIELDS} ints (8 bytes) a cell: a 100 m by 100 m
+         * floor's 4 million cells were 96 MB at six ints a cell, and the search waited on memory (JFR).
+         * The mark holds the plan's stamp above {@link #STAMP_SHIFT} (the mark is this plan's where it is at
+         * least {@link #base}), the flags {@link #SEEN}, {@link #SHUT} and {@link #KNOWN}, the step the cell
+         * was reached by ({@link #FROM_SHIFT}) and its state ({@link #INFO_SHIFT}).
          */
         int[] cells = new int[0];
-        static final int FIELDS = 6;
-        static final int SEEN = 0;
+        static final int FIELDS = 2;
+        static final int MARK = 0;
         static final int COST = 1;
-        static final int FROM = 2;
-        static final int SHUT = 3;
+        /** Reached: cost and step valid. */
+        static final int SEEN = 1;
+        /** Done (taken off the open list). */
+        static final int SHUT = 2;
+        /** State worked out. */
         static final int KNOWN = 4;
-        static final int INFO = 5;
+        /** The index of the step (of the eight) that reached the cell, {@link #START} at the start, 4 bits. */
+        static final int FROM_SHIFT = 3;
+        static final int FROM_BITS = 15 << FROM_SHIFT;
+        static final int START = 8;
+        /** The state plus one: 0 blocked, else the extra cost plus one (at most {@value #SOFT_COST} + 1), 6 bits. */
+        static final int INFO_SHIFT = 7;
+        static final int STAMP_SHIFT = 13;
+        /** The largest stamp that keeps a mark positive; then the marks are cleared and the stamps start again. */
+        static final int MAX_STAMP = (1 << (31 - STAMP_SHIFT)) - 1;
         int stamp;
+        /** This plan's stamp shifted into place: the least mark of this plan. */
+        int base;
         /** The open cells' keys (f, then on a large area the heuristic, else the cell) and, at the same places, the cells. */
         long[] heap = new long[1024];
         int[] heapCell = new int[1024];
         /** On a large area, the open cells whose f equals the cell being expanded's, newest on top. */
         int[] level = new int[1024];
+        /** The route's chain of cells, goal first. */
+        int[] chain = new int[1024];
 
         /**
          * @return a cell's state (column a, row b of the area, index k): -1 when blocked, else its extra
          *         cost; worked out once per plan (the search asks for a cell up to a dozen times)
          */
         int info(Grid g, int k, int a, int b) {
-            int at = k * FIELDS;
-            if (cells[at + KNOWN] != stamp) {
-                cells[at + KNOWN] = stamp;
-                cells[at + INFO] = g.blocked(a, b) ? -1 : g.extra(a, b);
+            int at = k * FIELDS + MARK;
+            int mark = Math.max(cells[at], base);
+            if ((mark & KNOWN) == 0) {
+                mark |= KNOWN | (g.blocked(a, b) ? 0 : g.extra(a, b) + 1) << INFO_SHIFT;
+                cells[at] = mark;
             }
-            return cells[at + INFO];
+            return (mark >>> INFO_SHIFT & 63) - 1;
         }
 
         /** @return this thread's arrays, large enough for an area of n cells, with a fresh stamp */
         static Search forArea(int n) {
             Search s = OF_THREAD.get();
-            if (s.cells.length < (long) n * FIELDS || s.stamp == Integer.MAX_VALUE) {
+            if (s.cells.length < (long) n * FIELDS) {
                 // with room to grow: a floor's area grows as it is explored, and each new array was tens of megabytes
                 long size = Math.max((long) n * FIELDS, s.cells.length + s.cells.length / 2L);
                 s.cells = new int[(int) Math.min(size, Integer.MAX_VALUE - 8 - (Integer.MAX_VALUE - 8) % FIELDS)];
                 s.stamp = 0;
+            } else if (s.stamp == MAX_STAMP) {
+                Arrays.fill(s.cells, 0);
+                s.stamp = 0;
             }
             s.stamp++;
+            s.base = s.stamp << STAMP_SHIFT;
             return s;
         }
     }
@@ -459,7 +478,7 @@ public final class RoutePlanner {
         Search search = Search.forArea(n);
         int[] node = search.cells;
         final int fields = Search.FIELDS;
-        int stamp = search.stamp;
+        final int base = search.base;
         long[] heap = search.heap;
         int[] heapCell = search.heapCell;
         // on a floor, of the cells equally promising the one nearest the goal first: else A* opens every cell of the
@@ -470,8 +489,7 @@ public final class RoutePlanner {
         int levelSize = 0;
         int size = 0;
         node[start * fields + Search.COST] = 0;
-        node[start * fields + Search.FROM] = -1;
-        node[start * fields + Search.SEEN] = stamp;
+        node[start * fields + Search.MARK] = base | Search.SEEN | Search.START << Search.FROM_SHIFT;
         int startH = weighted(heuristic(si, sj, gi, gj, reachTenths), weight);
         heap[size] = ((long) startH << 32) | (deepestFirst ? startH : start);
         heapCell[size++] = start;
@@ -489,10 +507,11 @@ public final class RoutePlanner {
                 heapCell[0] = heapCell[size];
                 siftDown(heap, heapCell, size);
             }
-            if (node[k * fields + Search.SHUT] == stamp) {
+            int markK = node[k * fields + Search.MARK]; // this plan's: the cell was reached
+            if ((markK & Search.SHUT) != 0) {
                 continue;
             }
-            node[k * fields + Search.SHUT] = stamp;
+            node[k * fields + Search.MARK] = markK | Search.SHUT;
             int costK = node[k * fields + Search.COST];
             int a = k % w;
             int b = k / w;
@@ -511,7 +530,8 @@ public final class RoutePlanner {
                 }
                 int nk = nb * w + na;
                 int at = nk * fields;
-                if (node[at + Search.SHUT] == stamp) {
+                int mark = node[at + Search.MARK];
+                if (mark >= base && (mark & Search.SHUT) != 0) {
                     continue;
                 }
                 int extra = search.info(g, nk, na, nb);
@@ -526,10 +546,10 @@ public final class RoutePlanner {
                     continue;
                 }
                 int nc = costK + (d < 4 ? 10 : 14) + extra;
-                if (node[at + Search.SEEN] != stamp || nc < node[at + Search.COST]) {
-                    node[at + Search.SEEN] = stamp;
+                mark = node[at + Search.MARK]; // this plan's now: its state is known
+                if ((mark & Search.SEEN) == 0 || nc < node[at + Search.COST]) {
+                    node[at + Search.MARK] = mark & ~Search.FROM_BITS | Search.SEEN | d << Search.FROM_SHIFT;
                     node[at + Search.COST] = nc;
-                    node[at + Search.FROM] = k;
                     int hn = weighted(heuristic(g.i0 + na, g.j0 + nb, gi, gj, reachTenths), weight);
                     long f = nc + (long) hn;
                     if (f == fk) {
@@ -555,17 +575,27 @@ public final class RoutePlanner {
         if (end < 0) {
             return null;
         }
-        List<Integer> cells = new ArrayList<>();
-        for (int k = end; k >= 0; k = node[k * fields + Search.FROM]) {
-            cells.add(k);
+        // the chain back from the goal, each cell's step undone (an int array kept by the thread, no boxed list)
+        int[] chain = search.chain;
+        int m = 0;
+        for (int k = end; ; ) {
+            if (m == chain.length) {
+                chain = Arrays.copyOf(chain, m * 2);
+            }
+            chain[m++] = k;
+            int from = node[k * fields + Search.MARK] >>> Search.FROM_SHIFT & 15;
+            if (from == Search.START) {
+                break;
+            }
+            k -= dj[from] * w + di[from];
         }
-        int m = cells.size();
+        search.chain = chain;
         double[] xs = new double[m + 1];
         double[] ys = new double[m + 1];
         xs[0] = sx;
         ys[0] = sy;
         for (int q = 1; q < m; q++) {
-            int k = cells.get(m - 1 - q);
+            int k = chain[m - 1 - q];
             xs[q] = OccupancyMap.centre(g.i0 + k % w);
             ys[q] = OccupancyMap.centre(g.j0 + k / w);
         }
