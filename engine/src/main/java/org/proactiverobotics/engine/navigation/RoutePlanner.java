@@ -160,11 +160,11 @@ public final class RoutePlanner {
         /** @return a cell's chamfer distance to the nearest occupied cell, thirds of a cell (capped) */
         int d(int k) {
             if (sameArea) {
-                return field.dist()[k];
+                return field.at(k);
             }
             int a = i0 + k % w - field.i0();
             int b = j0 + k / w - field.j0();
-            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.dist()[b * field.w() + a];
+            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.at(b * field.w() + a);
         }
 
         /** @return whether a cell's centre lies within {@value #START_CLEAR_M} m of the start */
@@ -179,7 +179,7 @@ public final class RoutePlanner {
             double ox = OccupancyMap.centre(i0 + a) - sx;
             double oy = OccupancyMap.centre(j0 + b) - sy;
             boolean nearStart = ox * ox + oy * oy <= START_CLEAR_M * START_CLEAR_M;
-            int d = sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b);
+            int d = sameArea ? field.at(b * w + a) : dAt(i0 + a, j0 + b);
             if (d == 0 || d / 3.0 * OccupancyMap.CELL_M < (nearStart ? startBlockM : bodyM)) {
                 return true; // occupied cells stay blocked even next to the start
             }
@@ -188,7 +188,7 @@ public final class RoutePlanner {
 
         /** @return the extra cost of an unblocked cell (column and row in the area) near the blocked band, tenths of a cell's step */
         int extra(int a, int b) {
-            double dm = (sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b)) / 3.0 * OccupancyMap.CELL_M;
+            double dm = (sameArea ? field.at(b * w + a) : dAt(i0 + a, j0 + b)) / 3.0 * OccupancyMap.CELL_M;
             return dm < bodyM + SOFT_ZONE_M ? (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M)) : 0;
         }
 
@@ -204,7 +204,7 @@ public final class RoutePlanner {
                 return false;
             }
             int k = b * w + a;
-            int d = sameArea ? field.dist()[k] : dAt(i, j);
+            int d = sameArea ? field.at(k) : dAt(i, j);
             // a cell the body may not enter is nearer a wall than a straight drive keeps: the clearance decides
             return nearStart ? d == 0 : (float) (d / 3.0 * OccupancyMap.CELL_M) < sightClearanceM || unseen(k, nearStart(k));
         }
@@ -229,7 +229,7 @@ public final class RoutePlanner {
         private int dAt(int i, int j) {
             int a = i - field.i0();
             int b = j - field.j0();
-            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.dist()[b * field.w() + a];
+            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.at(b * field.w() + a);
         }
 
 
@@ -629,11 +629,39 @@ public final class RoutePlanner {
     /** The last distances this thread worked out, for the next plan on the same map and area. */
     private static final ThreadLocal<Distances> LAST_DISTANCES = new ThreadLocal<>();
 
-    /** Chamfer distances of one area of one map, at one version of its occupied cells. */
-    private record Distances(WeakReference<OccupancyMap> map, long version, int i0, int j0, int w, int h, int cap, int[] dist) {
+    /** The largest cap kept in a byte a cell (a robot's radius up to 3.9 m). */
+    static final int BYTE_CAP = 255;
+
+    /**
+     * Chamfer distances of one area of one map, at one version of its occupied cells: on a large area
+     * whose cap allows, a byte a cell ({@code bytes}, read unsigned), else an int ({@code dist}); the other null.
+     */
+    private record Distances(WeakReference<OccupancyMap> map, long version, int i0, int j0, int w, int h, int cap, int[] dist,
+                             byte[] bytes) {
         boolean of(OccupancyMap m, Grid g, int capThirds) {
             return map.get() == m && version == m.occupancyVersion() && i0 == g.i0 && j0 == g.j0 && w == g.w && h == g.h
                     && cap == capThirds;
+        }
+
+        /** @return the distance of the cell at index k of the area, thirds of a cell */
+        int at(int k) {
+            return bytes != null ? bytes[k] & 0xFF : dist[k];
+        }
+
+        void set(int k, int d) {
+            if (bytes != null) {
+                bytes[k] = (byte) d;
+            } else {
+                dist[k] = d;
+            }
+        }
+
+        /**
+         * @return whether an area's distances are kept a byte a cell: a floor's grew with the map, and each
+         *         new copy of its 4 million ints was most of the distances' time (a small area's stay ints, as swept)
+         */
+        static boolean inBytes(Grid g, int cap) {
+            return (long) g.w * g.h >= LARGE_CELLS && cap <= BYTE_CAP;
         }
     }
 
@@ -649,9 +677,8 @@ public final class RoutePlanner {
             return last;
         }
         if ((long) g.w * g.h >= LARGE_CELLS && last != null && last.map().get() == map && last.cap() == cap) {
-            int[] dist = updated(map, g, cap, last);
-            if (dist != null) {
-                Distances now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, g.w, g.h, cap, dist);
+            Distances now = updated(map, g, cap, last);
+            if (now != null) {
                 LAST_DISTANCES.set(now);
                 return now;
             }
@@ -669,7 +696,15 @@ public final class RoutePlanner {
             }
         });
         sweep(dist, w, h);
-        Distances now = new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist);
+        byte[] bytes = null;
+        if (Distances.inBytes(g, cap)) {
+            bytes = new byte[w * h];
+            for (int k = 0; k < bytes.length; k++) {
+                bytes[k] = (byte) dist[k];
+            }
+        }
+        Distances now = new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap,
+                bytes == null ? dist : null, bytes);
         LAST_DISTANCES.set(now);
         return now;
     }
@@ -679,9 +714,10 @@ public final class RoutePlanner {
      * occupancy flipped since: within a square of the cap's reach about them, from the occupied
      * cells within twice that (the chamfer distance there is exact: the occupied cells it is taken
      * from lie in the square's margin, and a chamfer path between two cells keeps to their bounding
-     * box). Null when the map no longer knows what flipped, or so much did that a whole sweep is cheaper.
+     * box). Null when the map no longer knows what flipped, or so much did that a whole sweep is cheaper,
+     * or the last ones were kept otherwise (ints, a byte a cell) than this area's are.
      */
-    private static int[] updated(OccupancyMap map, Grid g, int cap, Distances last) {
+    private static Distances updated(OccupancyMap map, Grid g, int cap, Distances last) {
         int w = g.w;
         int h = g.h;
         int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
@@ -701,21 +737,37 @@ public final class RoutePlanner {
         if (box[0] != Integer.MAX_VALUE && (long) (pa1 - pa0 + 1) * (pb1 - pb0 + 1) * 4 > (long) w * h) {
             return null;
         }
-        int[] dist;
+        boolean inBytes = Distances.inBytes(g, cap);
+        if (inBytes != (last.bytes() != null)) {
+            return null;
+        }
+        Distances now;
         if (last.i0() == g.i0 && last.j0() == g.j0 && last.w() == w && last.h() == h) {
-            dist = last.dist(); // updated in place: the last plan's grid is gone
+            // updated in place: the last plan's grid is gone
+            now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, w, h, cap, last.dist(), last.bytes());
         } else {
             // every occupied cell lies a metre inside both areas: a cell outside the old one is at the cap
-            dist = new int[w * h];
-            Arrays.fill(dist, cap);
+            Object from = inBytes ? last.bytes() : last.dist();
+            Object to;
+            if (inBytes) {
+                byte[] bytes = new byte[w * h];
+                Arrays.fill(bytes, (byte) cap);
+                to = bytes;
+                now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, w, h, cap, null, bytes);
+            } else {
+                int[] dist = new int[w * h];
+                Arrays.fill(dist, cap);
+                to = dist;
+                now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist, null);
+            }
             int a0 = Math.max(g.i0, last.i0());
             int a1 = Math.min(g.i0 + w, last.i0() + last.w());
             for (int j = Math.max(g.j0, last.j0()); j < Math.min(g.j0 + h, last.j0() + last.h()) && a0 < a1; j++) {
-                System.arraycopy(last.dist(), (j - last.j0()) * last.w() + a0 - last.i0(), dist, (j - g.j0) * w + a0 - g.i0, a1 - a0);
+                System.arraycopy(from, (j - last.j0()) * last.w() + a0 - last.i0(), to, (j - g.j0) * w + a0 - g.i0, a1 - a0);
             }
         }
         if (box[0] == Integer.MAX_VALUE) {
-            return dist;
+            return now;
         }
         // the square with a margin of the reach, swept as the whole area is
         int ea0 = Math.max(g.i0, pa0 - reach);
@@ -731,10 +783,10 @@ public final class RoutePlanner {
         sweep(d, ew, eh);
         for (int j = pb0; j <= pb1; j++) {
             for (int i = pa0; i <= pa1; i++) {
-                dist[(j - g.j0) * w + i - g.i0] = d[(j - eb0) * ew + i - ea0];
+                now.set((j - g.j0) * w + i - g.i0, d[(j - eb0) * ew + i - ea0]);
             }
         }
-        return dist;
+        return now;
     }
 
     /** The two chamfer sweeps (3-4) over an area whose occupied cells are 0 and others the cap. */
