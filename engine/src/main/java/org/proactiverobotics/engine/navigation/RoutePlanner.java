@@ -1,9 +1,7 @@
 package org.proactiverobotics.engine.navigation;
 
 import java.lang.ref.WeakReference;
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
 import org.proactiverobotics.engine.tables.OccupancyMap;
 
 /**
@@ -50,55 +48,76 @@ public final class RoutePlanner {
     static final int AREA_BLOCK = 64;
 
     /**
-     * A* search's arrays, kept by the thread from plan to plan: a cell's cost and parent count only
+     * A* search's arrays, kept by the thread from plan to plan: a cell's cost and way in count only
      * where its mark is this plan's, so that a plan costs what it searches, not its whole area.
      */
     private static final class Search {
         private static final ThreadLocal<Search> OF_THREAD = ThreadLocal.withInitial(Search::new);
         /**
-         * Each cell's entries side by side, {@value #FIELDS} ints a cell (one cache line holds a cell's
-         * all; six arrays of a floor's area were six lines and often six pages a neighbour, JFR):
-         * reached (cost and parent valid) where equal to {@link #stamp}, cost, parent, done where equal
-         * to the stamp, state known where equal to the stamp, and the state ({@link #info}).
+         * Each cell's mark and cost side by side, {@value #FIELDS} ints (8 bytes) a cell: a 100 m by 100 m
+         * floor's 4 million cells were 96 MB at six ints a cell, and the search waited on memory (JFR).
+         * The mark holds the plan's stamp above {@link #STAMP_SHIFT} (the mark is this plan's where it is at
+         * least {@link #base}), the flags {@link #SEEN}, {@link #SHUT} and {@link #KNOWN}, the step the cell
+         * was reached by ({@link #FROM_SHIFT}) and its state ({@link #INFO_SHIFT}).
          */
         int[] cells = new int[0];
-        static final int FIELDS = 6;
-        static final int SEEN = 0;
+        static final int FIELDS = 2;
+        static final int MARK = 0;
         static final int COST = 1;
-        static final int FROM = 2;
-        static final int SHUT = 3;
+        /** Reached: cost and step valid. */
+        static final int SEEN = 1;
+        /** Done (taken off the open list). */
+        static final int SHUT = 2;
+        /** State worked out. */
         static final int KNOWN = 4;
-        static final int INFO = 5;
+        /** The index of the step (of the eight) that reached the cell, {@link #START} at the start, 4 bits. */
+        static final int FROM_SHIFT = 3;
+        static final int FROM_BITS = 15 << FROM_SHIFT;
+        static final int START = 8;
+        /** The state plus one: 0 blocked, else the extra cost plus one (at most {@value #SOFT_COST} + 1), 6 bits. */
+        static final int INFO_SHIFT = 7;
+        static final int STAMP_SHIFT = 13;
+        /** The largest stamp that keeps a mark positive; then the marks are cleared and the stamps start again. */
+        static final int MAX_STAMP = (1 << (31 - STAMP_SHIFT)) - 1;
         int stamp;
+        /** This plan's stamp shifted into place: the least mark of this plan. */
+        int base;
         /** The open cells' keys (f, then on a large area the heuristic, else the cell) and, at the same places, the cells. */
         long[] heap = new long[1024];
         int[] heapCell = new int[1024];
         /** On a large area, the open cells whose f equals the cell being expanded's, newest on top. */
         int[] level = new int[1024];
+        /** The route's chain of cells, goal first. */
+        int[] chain = new int[1024];
 
         /**
          * @return a cell's state (column a, row b of the area, index k): -1 when blocked, else its extra
          *         cost; worked out once per plan (the search asks for a cell up to a dozen times)
          */
         int info(Grid g, int k, int a, int b) {
-            int at = k * FIELDS;
-            if (cells[at + KNOWN] != stamp) {
-                cells[at + KNOWN] = stamp;
-                cells[at + INFO] = g.blocked(a, b) ? -1 : g.extra(a, b);
+            int at = k * FIELDS + MARK;
+            int mark = Math.max(cells[at], base);
+            if ((mark & KNOWN) == 0) {
+                mark |= KNOWN | (g.blocked(a, b) ? 0 : g.extra(a, b) + 1) << INFO_SHIFT;
+                cells[at] = mark;
             }
-            return cells[at + INFO];
+            return (mark >>> INFO_SHIFT & 63) - 1;
         }
 
         /** @return this thread's arrays, large enough for an area of n cells, with a fresh stamp */
         static Search forArea(int n) {
             Search s = OF_THREAD.get();
-            if (s.cells.length < (long) n * FIELDS || s.stamp == Integer.MAX_VALUE) {
+            if (s.cells.length < (long) n * FIELDS) {
                 // with room to grow: a floor's area grows as it is explored, and each new array was tens of megabytes
                 long size = Math.max((long) n * FIELDS, s.cells.length + s.cells.length / 2L);
                 s.cells = new int[(int) Math.min(size, Integer.MAX_VALUE - 8 - (Integer.MAX_VALUE - 8) % FIELDS)];
                 s.stamp = 0;
+            } else if (s.stamp == MAX_STAMP) {
+                Arrays.fill(s.cells, 0);
+                s.stamp = 0;
             }
             s.stamp++;
+            s.base = s.stamp << STAMP_SHIFT;
             return s;
         }
     }
@@ -141,11 +160,11 @@ public final class RoutePlanner {
         /** @return a cell's chamfer distance to the nearest occupied cell, thirds of a cell (capped) */
         int d(int k) {
             if (sameArea) {
-                return field.dist()[k];
+                return field.at(k);
             }
             int a = i0 + k % w - field.i0();
             int b = j0 + k / w - field.j0();
-            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.dist()[b * field.w() + a];
+            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.at(b * field.w() + a);
         }
 
         /** @return whether a cell's centre lies within {@value #START_CLEAR_M} m of the start */
@@ -160,7 +179,7 @@ public final class RoutePlanner {
             double ox = OccupancyMap.centre(i0 + a) - sx;
             double oy = OccupancyMap.centre(j0 + b) - sy;
             boolean nearStart = ox * ox + oy * oy <= START_CLEAR_M * START_CLEAR_M;
-            int d = sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b);
+            int d = sameArea ? field.at(b * w + a) : dAt(i0 + a, j0 + b);
             if (d == 0 || d / 3.0 * OccupancyMap.CELL_M < (nearStart ? startBlockM : bodyM)) {
                 return true; // occupied cells stay blocked even next to the start
             }
@@ -169,7 +188,7 @@ public final class RoutePlanner {
 
         /** @return the extra cost of an unblocked cell (column and row in the area) near the blocked band, tenths of a cell's step */
         int extra(int a, int b) {
-            double dm = (sameArea ? field.dist()[b * w + a] : dAt(i0 + a, j0 + b)) / 3.0 * OccupancyMap.CELL_M;
+            double dm = (sameArea ? field.at(b * w + a) : dAt(i0 + a, j0 + b)) / 3.0 * OccupancyMap.CELL_M;
             return dm < bodyM + SOFT_ZONE_M ? (int) Math.round(SOFT_COST * (1 - Math.max(0, dm - bodyM) / SOFT_ZONE_M)) : 0;
         }
 
@@ -185,7 +204,7 @@ public final class RoutePlanner {
                 return false;
             }
             int k = b * w + a;
-            int d = sameArea ? field.dist()[k] : dAt(i, j);
+            int d = sameArea ? field.at(k) : dAt(i, j);
             // a cell the body may not enter is nearer a wall than a straight drive keeps: the clearance decides
             return nearStart ? d == 0 : (float) (d / 3.0 * OccupancyMap.CELL_M) < sightClearanceM || unseen(k, nearStart(k));
         }
@@ -210,7 +229,7 @@ public final class RoutePlanner {
         private int dAt(int i, int j) {
             int a = i - field.i0();
             int b = j - field.j0();
-            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.dist()[b * field.w() + a];
+            return a < 0 || b < 0 || a >= field.w() || b >= field.h() ? field.cap() : field.at(b * field.w() + a);
         }
 
 
@@ -459,7 +478,7 @@ public final class RoutePlanner {
         Search search = Search.forArea(n);
         int[] node = search.cells;
         final int fields = Search.FIELDS;
-        int stamp = search.stamp;
+        final int base = search.base;
         long[] heap = search.heap;
         int[] heapCell = search.heapCell;
         // on a floor, of the cells equally promising the one nearest the goal first: else A* opens every cell of the
@@ -470,8 +489,7 @@ public final class RoutePlanner {
         int levelSize = 0;
         int size = 0;
         node[start * fields + Search.COST] = 0;
-        node[start * fields + Search.FROM] = -1;
-        node[start * fields + Search.SEEN] = stamp;
+        node[start * fields + Search.MARK] = base | Search.SEEN | Search.START << Search.FROM_SHIFT;
         int startH = weighted(heuristic(si, sj, gi, gj, reachTenths), weight);
         heap[size] = ((long) startH << 32) | (deepestFirst ? startH : start);
         heapCell[size++] = start;
@@ -489,10 +507,11 @@ public final class RoutePlanner {
                 heapCell[0] = heapCell[size];
                 siftDown(heap, heapCell, size);
             }
-            if (node[k * fields + Search.SHUT] == stamp) {
+            int markK = node[k * fields + Search.MARK]; // this plan's: the cell was reached
+            if ((markK & Search.SHUT) != 0) {
                 continue;
             }
-            node[k * fields + Search.SHUT] = stamp;
+            node[k * fields + Search.MARK] = markK | Search.SHUT;
             int costK = node[k * fields + Search.COST];
             int a = k % w;
             int b = k / w;
@@ -511,7 +530,8 @@ public final class RoutePlanner {
                 }
                 int nk = nb * w + na;
                 int at = nk * fields;
-                if (node[at + Search.SHUT] == stamp) {
+                int mark = node[at + Search.MARK];
+                if (mark >= base && (mark & Search.SHUT) != 0) {
                     continue;
                 }
                 int extra = search.info(g, nk, na, nb);
@@ -526,10 +546,10 @@ public final class RoutePlanner {
                     continue;
                 }
                 int nc = costK + (d < 4 ? 10 : 14) + extra;
-                if (node[at + Search.SEEN] != stamp || nc < node[at + Search.COST]) {
-                    node[at + Search.SEEN] = stamp;
+                mark = node[at + Search.MARK]; // this plan's now: its state is known
+                if ((mark & Search.SEEN) == 0 || nc < node[at + Search.COST]) {
+                    node[at + Search.MARK] = mark & ~Search.FROM_BITS | Search.SEEN | d << Search.FROM_SHIFT;
                     node[at + Search.COST] = nc;
-                    node[at + Search.FROM] = k;
                     int hn = weighted(heuristic(g.i0 + na, g.j0 + nb, gi, gj, reachTenths), weight);
                     long f = nc + (long) hn;
                     if (f == fk) {
@@ -555,17 +575,27 @@ public final class RoutePlanner {
         if (end < 0) {
             return null;
         }
-        List<Integer> cells = new ArrayList<>();
-        for (int k = end; k >= 0; k = node[k * fields + Search.FROM]) {
-            cells.add(k);
+        // the chain back from the goal, each cell's step undone (an int array kept by the thread, no boxed list)
+        int[] chain = search.chain;
+        int m = 0;
+        for (int k = end; ; ) {
+            if (m == chain.length) {
+                chain = Arrays.copyOf(chain, m * 2);
+            }
+            chain[m++] = k;
+            int from = node[k * fields + Search.MARK] >>> Search.FROM_SHIFT & 15;
+            if (from == Search.START) {
+                break;
+            }
+            k -= dj[from] * w + di[from];
         }
-        int m = cells.size();
+        search.chain = chain;
         double[] xs = new double[m + 1];
         double[] ys = new double[m + 1];
         xs[0] = sx;
         ys[0] = sy;
         for (int q = 1; q < m; q++) {
-            int k = cells.get(m - 1 - q);
+            int k = chain[m - 1 - q];
             xs[q] = OccupancyMap.centre(g.i0 + k % w);
             ys[q] = OccupancyMap.centre(g.j0 + k / w);
         }
@@ -599,11 +629,39 @@ public final class RoutePlanner {
     /** The last distances this thread worked out, for the next plan on the same map and area. */
     private static final ThreadLocal<Distances> LAST_DISTANCES = new ThreadLocal<>();
 
-    /** Chamfer distances of one area of one map, at one version of its occupied cells. */
-    private record Distances(WeakReference<OccupancyMap> map, long version, int i0, int j0, int w, int h, int cap, int[] dist) {
+    /** The largest cap kept in a byte a cell (a robot's radius up to 3.9 m). */
+    static final int BYTE_CAP = 255;
+
+    /**
+     * Chamfer distances of one area of one map, at one version of its occupied cells: on a large area
+     * whose cap allows, a byte a cell ({@code bytes}, read unsigned), else an int ({@code dist}); the other null.
+     */
+    private record Distances(WeakReference<OccupancyMap> map, long version, int i0, int j0, int w, int h, int cap, int[] dist,
+                             byte[] bytes) {
         boolean of(OccupancyMap m, Grid g, int capThirds) {
             return map.get() == m && version == m.occupancyVersion() && i0 == g.i0 && j0 == g.j0 && w == g.w && h == g.h
                     && cap == capThirds;
+        }
+
+        /** @return the distance of the cell at index k of the area, thirds of a cell */
+        int at(int k) {
+            return bytes != null ? bytes[k] & 0xFF : dist[k];
+        }
+
+        void set(int k, int d) {
+            if (bytes != null) {
+                bytes[k] = (byte) d;
+            } else {
+                dist[k] = d;
+            }
+        }
+
+        /**
+         * @return whether an area's distances are kept a byte a cell: a floor's grew with the map, and each
+         *         new copy of its 4 million ints was most of the distances' time (a small area's stay ints, as swept)
+         */
+        static boolean inBytes(Grid g, int cap) {
+            return (long) g.w * g.h >= LARGE_CELLS && cap <= BYTE_CAP;
         }
     }
 
@@ -619,9 +677,8 @@ public final class RoutePlanner {
             return last;
         }
         if ((long) g.w * g.h >= LARGE_CELLS && last != null && last.map().get() == map && last.cap() == cap) {
-            int[] dist = updated(map, g, cap, last);
-            if (dist != null) {
-                Distances now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, g.w, g.h, cap, dist);
+            Distances now = updated(map, g, cap, last);
+            if (now != null) {
                 LAST_DISTANCES.set(now);
                 return now;
             }
@@ -639,7 +696,15 @@ public final class RoutePlanner {
             }
         });
         sweep(dist, w, h);
-        Distances now = new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist);
+        byte[] bytes = null;
+        if (Distances.inBytes(g, cap)) {
+            bytes = new byte[w * h];
+            for (int k = 0; k < bytes.length; k++) {
+                bytes[k] = (byte) dist[k];
+            }
+        }
+        Distances now = new Distances(new WeakReference<>(map), map.occupancyVersion(), g.i0, g.j0, w, h, cap,
+                bytes == null ? dist : null, bytes);
         LAST_DISTANCES.set(now);
         return now;
     }
@@ -649,9 +714,10 @@ public final class RoutePlanner {
      * occupancy flipped since: within a square of the cap's reach about them, from the occupied
      * cells within twice that (the chamfer distance there is exact: the occupied cells it is taken
      * from lie in the square's margin, and a chamfer path between two cells keeps to their bounding
-     * box). Null when the map no longer knows what flipped, or so much did that a whole sweep is cheaper.
+     * box). Null when the map no longer knows what flipped, or so much did that a whole sweep is cheaper,
+     * or the last ones were kept otherwise (ints, a byte a cell) than this area's are.
      */
-    private static int[] updated(OccupancyMap map, Grid g, int cap, Distances last) {
+    private static Distances updated(OccupancyMap map, Grid g, int cap, Distances last) {
         int w = g.w;
         int h = g.h;
         int[] box = {Integer.MAX_VALUE, Integer.MAX_VALUE, Integer.MIN_VALUE, Integer.MIN_VALUE};
@@ -671,21 +737,37 @@ public final class RoutePlanner {
         if (box[0] != Integer.MAX_VALUE && (long) (pa1 - pa0 + 1) * (pb1 - pb0 + 1) * 4 > (long) w * h) {
             return null;
         }
-        int[] dist;
+        boolean inBytes = Distances.inBytes(g, cap);
+        if (inBytes != (last.bytes() != null)) {
+            return null;
+        }
+        Distances now;
         if (last.i0() == g.i0 && last.j0() == g.j0 && last.w() == w && last.h() == h) {
-            dist = last.dist(); // updated in place: the last plan's grid is gone
+            // updated in place: the last plan's grid is gone
+            now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, w, h, cap, last.dist(), last.bytes());
         } else {
             // every occupied cell lies a metre inside both areas: a cell outside the old one is at the cap
-            dist = new int[w * h];
-            Arrays.fill(dist, cap);
+            Object from = inBytes ? last.bytes() : last.dist();
+            Object to;
+            if (inBytes) {
+                byte[] bytes = new byte[w * h];
+                Arrays.fill(bytes, (byte) cap);
+                to = bytes;
+                now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, w, h, cap, null, bytes);
+            } else {
+                int[] dist = new int[w * h];
+                Arrays.fill(dist, cap);
+                to = dist;
+                now = new Distances(last.map(), map.occupancyVersion(), g.i0, g.j0, w, h, cap, dist, null);
+            }
             int a0 = Math.max(g.i0, last.i0());
             int a1 = Math.min(g.i0 + w, last.i0() + last.w());
             for (int j = Math.max(g.j0, last.j0()); j < Math.min(g.j0 + h, last.j0() + last.h()) && a0 < a1; j++) {
-                System.arraycopy(last.dist(), (j - last.j0()) * last.w() + a0 - last.i0(), dist, (j - g.j0) * w + a0 - g.i0, a1 - a0);
+                System.arraycopy(from, (j - last.j0()) * last.w() + a0 - last.i0(), to, (j - g.j0) * w + a0 - g.i0, a1 - a0);
             }
         }
         if (box[0] == Integer.MAX_VALUE) {
-            return dist;
+            return now;
         }
         // the square with a margin of the reach, swept as the whole area is
         int ea0 = Math.max(g.i0, pa0 - reach);
@@ -701,10 +783,10 @@ public final class RoutePlanner {
         sweep(d, ew, eh);
         for (int j = pb0; j <= pb1; j++) {
             for (int i = pa0; i <= pa1; i++) {
-                dist[(j - g.j0) * w + i - g.i0] = d[(j - eb0) * ew + i - ea0];
+                now.set((j - g.j0) * w + i - g.i0, d[(j - eb0) * ew + i - ea0]);
             }
         }
-        return dist;
+        return now;
     }
 
     /** The two chamfer sweeps (3-4) over an area whose occupied cells are 0 and others the cap. */
