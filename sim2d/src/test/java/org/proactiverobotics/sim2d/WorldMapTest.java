@@ -90,7 +90,10 @@ class WorldMapTest {
                 .containsExactly("map.file: " + dir.resolve("nope.yaml") + ": no such file");
         MapServerWriter.write(room(), dir.resolve("room.yaml"));
         assertThat(problems(world("\"map\": { \"file\": \"room.yaml\", \"cellM\": 0.5 }", 11, -4)))
-                .containsExactly("map.cellM: only a Moving AI map (.map) takes a cell size; a map_server YAML gives its resolution");
+                .containsExactly("map.cellM: only a Moving AI map (.map) or a picture alone (.pgm, .png) takes a cell size;"
+                        + " a map_server YAML gives its resolution");
+        assertThat(problems(world("\"map\": { \"file\": \"room.pgm\" }", 11, -4)))
+                .containsExactly("map.cellM: a picture alone has no scale: give cellM (metres a pixel), or name its map_server YAML");
         assertThat(problems(world("\"map\": { \"file\": \"room.yaml\", \"scale\": 2 }", 11, -4)))
                 .containsExactly("map.scale: unknown key (expected one of [cellM, file])");
         // the start on the map's left wall
