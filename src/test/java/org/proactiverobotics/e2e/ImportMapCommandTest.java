@@ -264,9 +264,14 @@ class ImportMapCommandTest extends CommandLineTest {
         assertThat(err.toString()).contains("--cell-m is for Moving AI maps (.map) and pictures alone (.pgm, .png)");
         assertThat(run("import-map", "--map", tmp.resolve("rooms.pgm").toString(), "--out", world.toString())).isEqualTo(2);
         assertThat(err.toString()).contains("rooms.pgm: a picture alone has no scale: give --cell-m (metres a pixel");
-        assertThat(run("import-map", "--map", tmp.resolve("rooms.bmp").toString(), "--out", world.toString())).isEqualTo(2);
-        assertThat(err.toString()).contains("rooms.bmp: not a map this reads: give a ROS map_server YAML (.yaml), a Moving AI"
-                + " map (.map), or a picture (.pgm, .png) with --cell-m");
+        for (String cell : new String[] {null, "0.05"}) {
+            String[] args = cell == null ? new String[] {"import-map", "--map", tmp.resolve("rooms.bmp").toString(), "--out", world.toString()}
+                    : new String[] {"import-map", "--map", tmp.resolve("rooms.bmp").toString(), "--out", world.toString(), "--cell-m", cell};
+            err.getBuffer().setLength(0);
+            assertThat(run(args)).isEqualTo(2);
+            assertThat(err.toString()).as("with --cell-m %s", cell).contains("rooms.bmp: not a map this reads: give a ROS map_server"
+                    + " YAML (.yaml), a Moving AI map (.map), or a picture (.pgm, .png) with --cell-m");
+        }
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--robot-radius", "0.5")).isEqualTo(2);
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--checkpoints", "0")).isEqualTo(2);
         assertThat(run("import-map", "--map", map.toString(), "--out", world.toString(), "--name", "my floor")).isEqualTo(2);

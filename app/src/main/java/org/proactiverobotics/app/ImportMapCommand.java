@@ -174,15 +174,15 @@ public final class ImportMapCommand implements Callable<Integer> {
         if (name != null && !name.matches("[A-Za-z0-9_-]+")) {
             return "--name must be letters, digits, '-' or '_': " + name;
         }
-        if (cellM != null && !(cellM > 0 && cellM <= 100)) {
-            return "--cell-m must be above 0 and at most 100 (metres a cell): " + cellM;
-        }
-        if (cellM != null && !MapFiles.takesCellSize(map)) {
-            return "--cell-m is for Moving AI maps (.map) and pictures alone (.pgm, .png); " + map + " gives its own resolution";
-        }
         if (!MapFiles.takesCellSize(map) && !MapFiles.isMapServer(map)) {
             return map + ": not a map this reads: give a ROS map_server YAML (.yaml), a Moving AI map (.map), or a picture"
                     + " (.pgm, .png) with --cell-m";
+        }
+        if (cellM != null && !(cellM > 0 && cellM <= 100)) {
+            return "--cell-m must be above 0 and at most 100 (metres a cell or a pixel): " + cellM;
+        }
+        if (cellM != null && !MapFiles.takesCellSize(map)) {
+            return "--cell-m is for Moving AI maps (.map) and pictures alone (.pgm, .png); " + map + " gives its own resolution";
         }
         if (cellM == null && MapFiles.isPicture(map)) {
             return map + ": a picture alone has no scale: give --cell-m (metres a pixel; 0.05 for most ROS maps), or its"
