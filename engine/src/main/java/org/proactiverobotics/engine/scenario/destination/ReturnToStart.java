@@ -83,6 +83,8 @@ public final class ReturnToStart extends Rule {
 
     private transient PoseEstimate position;
     private transient boolean newCheckpoint;
+    /** The unit vector from what stands beside the robot toward it, as the last watch found it (null: nothing). */
+    private transient double[] beside;
 
     private ReturnToStart() {
     }
@@ -206,7 +208,8 @@ public final class ReturnToStart extends Rule {
             besideSinceMs = -1;
             return false;
         }
-        if (besideDirection(scan) == null) {
+        beside = besideDirection(scan);
+        if (beside == null) {
             besideSinceMs = -1;
             return false;
         }
@@ -240,8 +243,7 @@ public final class ReturnToStart extends Rule {
      * @return whether it found such a place away from where it stands (then it drives there)
      */
     private boolean stepAside(RuleContext ctx, long now, double radiusM) {
-        DistanceScan scan = ctx.service(SensorReadings.class).newestScan().orElse(null);
-        double[] away = scan == null ? null : besideDirection(scan);
+        double[] away = beside; // what besideTooLong just found, from the same scan
         besideSinceMs = -1;
         standScan = null;
         if (away == null) {

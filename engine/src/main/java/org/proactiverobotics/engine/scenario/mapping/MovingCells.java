@@ -54,6 +54,9 @@ final class MovingCells {
     private int scans;
     /** The cells that faded out of view once, sorted: hit again from free, they are walls. */
     private long[] faded = new long[0];
+    /** {@link #smallBody}'s queue of joined cells, kept between calls (not saved). */
+    private transient int[] queueI;
+    private transient int[] queueJ;
 
     /**
      * Follows a cell that a ray hit after the rays had seen it free, and the occupied cells within
@@ -192,8 +195,12 @@ final class MovingCells {
      */
     boolean smallBody(OccupancyMap map, int i, int j, int span) {
         int limit = (span + 2 * NEIGHBOURS) * (span + 2 * NEIGHBOURS);
-        int[] qi = new int[limit];
-        int[] qj = new int[limit];
+        if (queueI == null || queueI.length < limit) {
+            queueI = new int[limit];
+            queueJ = new int[limit];
+        }
+        int[] qi = queueI;
+        int[] qj = queueJ;
         int n = 1;
         qi[0] = i;
         qj[0] = j;
