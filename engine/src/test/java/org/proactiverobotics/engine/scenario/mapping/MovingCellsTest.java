@@ -75,14 +75,20 @@ class MovingCellsTest {
         }
     }
 
+    /** @return a map on which a body of {@code cells} cells in a row was seen free, hit and faded, twice */
+    private static OccupancyMap bodySeenTwice(int cells) {
+        OccupancyMap map = OccupancyMap.empty();
+        MovingCells moving = new MovingCells();
+        seeFreeThenHitAndFade(map, moving, 0, cells);
+        seeFreeThenHitAndFade(map, moving, 0, cells);
+        return map;
+    }
+
     /* Another robot that stood twice where it had stood before (at a checkpoint, in a door) stayed a wall for good
        there: all 8 checkpoints found unreachable in the generated worlds of four robots (seed 17) were walled in so. */
     @Test
     void aRobotSizedBodySeenTwiceFadesAgain() {
-        OccupancyMap map = OccupancyMap.empty();
-        MovingCells moving = new MovingCells();
-        seeFreeThenHitAndFade(map, moving, 0, 5);
-        seeFreeThenHitAndFade(map, moving, 0, 5);
+        OccupancyMap map = bodySeenTwice(5);
         for (int j = 0; j < 5; j++) {
             assertThat(map.evidence(BEHIND, j)).as("a robot's side, 5 cells, seen twice: faded again").isZero();
         }
@@ -107,10 +113,7 @@ class MovingCellsTest {
 
     @Test
     void aBodyWiderThanARobotSeenTwiceStaysAWall() {
-        OccupancyMap map = OccupancyMap.empty();
-        MovingCells moving = new MovingCells();
-        seeFreeThenHitAndFade(map, moving, 0, 8);
-        seeFreeThenHitAndFade(map, moving, 0, 8);
+        OccupancyMap map = bodySeenTwice(8);
         for (int j = 0; j < 8; j++) {
             assertThat(map.evidence(BEHIND, j)).as("8 cells (0.4 m) in a row, hit again: wider than a robot").isEqualTo(OccupancyMap.HIT);
         }
