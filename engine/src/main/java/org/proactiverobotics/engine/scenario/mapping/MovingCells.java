@@ -20,8 +20,13 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * ({@link #smallBody}); a wall's face joins the rest of the wall and stays. Another robot that
  * stood again where it had stood before, at a checkpoint or in a door, was otherwise a wall for
  * good there: the 8 checkpoints found unreachable in the generated worlds of four robots (seed 17)
- * were each walled in by such blobs only. At most {@value #CAPACITY} cells are followed (the
- * oldest are dropped) and {@value #FADED_CAPACITY} faded cells remembered (the first ones).
+ * were each walled in by such blobs only. Nor does a followed cell fade out of view when the cells
+ * joined to it touch a cell that was hit before any ray crossed it: it is a wall's face that a
+ * grazing ray took free, drawn again as the robot drove along it, and it is remembered as a faded
+ * cell is (a wall that faded behind a robot had it turn back to the very same closed corridor end
+ * three times in the generated corridors worlds of four robots; judged by size instead, robots
+ * side by side round a station were walls too). At most {@value #CAPACITY} cells are followed (the oldest are dropped)
+ * and {@value #FADED_CAPACITY} faded cells remembered (the first ones).
  * Kept in plain fields: saved with the rule that holds it.
  */
 final class MovingCells {
@@ -54,6 +59,14 @@ final class MovingCells {
     private int scans;
     /** The cells that faded out of view once, sorted: hit again from free, they are walls. */
     private long[] faded = new long[0];
+    /** The followed cells sorted, each one's {@link #joinedToWall} verdict and its search's queue: for one decay (not saved). */
+    private transient long[] sorted;
+    private transient byte[] verdict;
+    private transient int[] bodyQueue;
+    private static final byte UNJUDGED = 0;
+    private static final byte SEARCHING = 1;
+    private static final byte WALL = 2;
+    private static final byte NOT_WALL = 3;
     /** {@link #smallBody}'s queue of joined cells, kept between calls (not saved). */
     private transient int[] queueI;
     private transient int[] queueJ;
@@ -105,7 +118,8 @@ final class MovingCells {
 
     /**
      * After a scan: every {@value #DECAY_EVERY} scans, the followed cells out of the rays' view
-     * lose one unit of evidence; cells with none left are no longer followed.
+     * lose one unit of evidence; cells with none left are no longer followed, nor are cells whose
+     * body touches a wall's cell (they stay, remembered as a faded cell is: {@link #joinedToWall}).
      *
      * @param map     the map
      * @param xM      the robot's x at the scan, metres
@@ -126,6 +140,7 @@ final class MovingCells {
         }
         // in view: where a ray that hits something beyond could still clear the cell
         double reach = radiusM + scan.rangeM() - UpdateMap.CLEAR_BEFORE_END_M;
+        sortFollowed();
         int kept = 0;
         for (int k = 0; k < count; k++) {
             int i = (int) (cells[k] >> 32);
@@ -135,6 +150,10 @@ final class MovingCells {
             double bearing = Math.atan2(dy, dx) - yawRad;
             bearing = Math.atan2(Math.sin(bearing), Math.cos(bearing));
             boolean inView = Math.hypot(dx, dy) <= reach && bearing >= lo - VIEW_MARGIN_RAD && bearing <= hi + VIEW_MARGIN_RAD;
+            if (!inView && map.evidence(i, j) > 0 && joinedToWall(map, cells[k])) {
+                remember(cells[k]); // a wall's face that a grazing ray took free: kept, as a faded cell hit again is
+                continue;
+            }
             if (!inView && map.evidence(i, j) > 0) {
                 map.clear(i, j);
                 if (map.evidence(i, j) == 0) {
@@ -146,6 +165,60 @@ final class MovingCells {
             }
         }
         count = kept;
+    }
+
+    /** Copies the followed cells, sorted, for {@link #joinedToWall}; no verdict yet. */
+    private void sortFollowed() {
+        if (sorted == null || sorted.length < count) {
+            sorted = new long[cells.length];
+            verdict = new byte[cells.length];
+            bodyQueue = new int[cells.length];
+        }
+        System.arraycopy(cells, 0, sorted, 0, count);
+        Arrays.sort(sorted, 0, count);
+        Arrays.fill(verdict, 0, count, UNJUDGED);
+    }
+
+    /**
+     * Whether a followed cell's body, the followed cells joined to it through gaps of up to
+     * {@value #NEIGHBOURS} cells, touches an occupied cell that is not followed: a wall's cell, hit
+     * before any ray crossed it (or a faded cell hit again). Its face was taken free by a grazing
+     * ray and hit again as the robot drove along. Robots, even several side by side, are followed
+     * whole and fade. One search a body, its verdict kept for its cells till the next decay.
+     */
+    private boolean joinedToWall(OccupancyMap map, long key) {
+        int at = Arrays.binarySearch(sorted, 0, count, key);
+        if (verdict[at] != UNJUDGED) {
+            return verdict[at] == WALL;
+        }
+        int n = 0;
+        bodyQueue[n++] = at;
+        verdict[at] = SEARCHING;
+        boolean wall = false;
+        for (int h = 0; h < n && !wall; h++) {
+            int ci = (int) (sorted[bodyQueue[h]] >> 32);
+            int cj = (int) sorted[bodyQueue[h]];
+            for (int b = -NEIGHBOURS; b <= NEIGHBOURS && !wall; b++) {
+                for (int a = -NEIGHBOURS; a <= NEIGHBOURS; a++) {
+                    if (map.get(ci + a, cj + b) != OccupancyMap.OCCUPIED) {
+                        continue;
+                    }
+                    int other = Arrays.binarySearch(sorted, 0, count, ((long) (ci + a) << 32) | ((cj + b) & 0xffffffffL));
+                    if (other < 0) {
+                        wall = true;
+                        break;
+                    }
+                    if (verdict[other] == UNJUDGED) {
+                        verdict[other] = SEARCHING;
+                        bodyQueue[n++] = other;
+                    }
+                }
+            }
+        }
+        for (int q = 0; q < n; q++) {
+            verdict[bodyQueue[q]] = wall ? WALL : NOT_WALL; // the cells queued so far are the same body
+        }
+        return wall;
     }
 
     /**
