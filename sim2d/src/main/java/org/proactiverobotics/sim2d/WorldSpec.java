@@ -102,16 +102,34 @@ public record WorldSpec(
 
     /**
      * The world as robot {@code index} alone would see its mission: its robot and checkpoints first, every
-     * station; the other robots are left out (what a robot's own mission rows and drive profile are made from).
+     * station, its own first: the one nearest its start (the first of those as near); the other robots
+     * are left out (what a robot's own mission rows and drive profile are made from).
      *
      * @param index the robot's position in {@link #robots()} (0-based)
      * @return a one-robot view of this world
      */
     public WorldSpec forRobot(int index) {
         RobotEntry entry = robots.get(index);
+        RechargeStation own = nearestStation(entry.robot());
+        List<RechargeStation> ownFirst = new java.util.ArrayList<>(rechargeStations);
+        ownFirst.remove(own);
+        ownFirst.add(0, own);
         return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, entry.robot(), obstacles,
-                entry.checkpoints(), checkpointRadiusM, rechargeStations.get(0), battery, List.of(entry),
-                rechargeStations);
+                entry.checkpoints(), checkpointRadiusM, own, battery, List.of(entry), ownFirst);
+    }
+
+    /**
+     * @param r a robot
+     * @return the station nearest the robot's start (the first of those as near): the one its mission charges at
+     */
+    public RechargeStation nearestStation(Robot r) {
+        RechargeStation nearest = rechargeStations.get(0);
+        for (RechargeStation st : rechargeStations) {
+            if (Math.hypot(st.x() - r.x(), st.y() - r.y()) < Math.hypot(nearest.x() - r.x(), nearest.y() - r.y())) {
+                nearest = st;
+            }
+        }
+        return nearest;
     }
 
     /** @return the time step in seconds */

@@ -55,6 +55,20 @@ class FleetWorldFilesTest {
         assertThat(w.rechargeStation()).isEqualTo(w.rechargeStations().get(0));
     }
 
+    /* Every robot's mission charged at the first station, though the generator checked each mission against the station
+       nearest its start: robots crossed the floor to charge (issue 34's generated corridors worlds). */
+    @Test
+    void eachRobotsMissionChargesAtTheStationNearestItsStart() {
+        WorldSpec w = WorldFiles.parse(FLEET);
+        WorldSpec first = w.forRobot(0);  // starts at (-3, 0): (-1, -4) is nearer than (1, -4)
+        WorldSpec second = w.forRobot(1); // starts at (3, 0.5): (1, -4) is nearer
+        assertThat(first.rechargeStation()).isEqualTo(new WorldSpec.RechargeStation(-1, -4, 0.3));
+        assertThat(second.rechargeStation()).isEqualTo(new WorldSpec.RechargeStation(1, -4, 0.3));
+        assertThat(second.rechargeStations()).as("every station still, its own first")
+                .containsExactly(new WorldSpec.RechargeStation(1, -4, 0.3), new WorldSpec.RechargeStation(-1, -4, 0.3));
+        assertThat(second.robot()).isEqualTo(w.robots().get(1).robot());
+    }
+
     @Test
     void aOneRobotFileMeansWhatItAlwaysMeant() {
         WorldSpec w = WorldFiles.parse(WorldFilesTest.COMPLETE_EXAMPLE);

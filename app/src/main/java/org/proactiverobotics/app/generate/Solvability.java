@@ -55,13 +55,7 @@ public record Solvability(boolean solvable, double lengthM, int recharges, Strin
      */
     public static WorldSpec missionOf(WorldSpec world, int index) {
         WorldSpec.RobotEntry entry = world.robots().get(index);
-        WorldSpec.RechargeStation nearest = world.rechargeStation();
-        for (WorldSpec.RechargeStation st : world.rechargeStations()) {
-            if (Math.hypot(st.x() - entry.robot().x(), st.y() - entry.robot().y())
-                    < Math.hypot(nearest.x() - entry.robot().x(), nearest.y() - entry.robot().y())) {
-                nearest = st;
-            }
-        }
+        WorldSpec.RechargeStation nearest = world.nearestStation(entry.robot()); // the station its mission charges at
         return new WorldSpec(world.name(), world.timeStepMs(), world.maxSimTimeS(), world.seed(), world.arena(), entry.robot(),
                 world.obstacles(), entry.checkpoints(), world.checkpointRadiusM(), nearest, world.battery());
     }
