@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import org.junit.jupiter.api.Test;
 import org.proactiverobotics.engine.SharedMemory;
+import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.scenario.battery.BatteryMonitorScenario;
 import org.proactiverobotics.engine.scenario.battery.MoveToRecharge;
 import org.proactiverobotics.testkit.ScenarioKit;
@@ -227,6 +228,40 @@ class BatteryMonitorScenarioTest {
         assertThat(placesClosedStandingAt(5, 12)).as("stopped by its own rule: no place closed").isZero();
         // driving for the way and getting nowhere still is a stall: a place closed after 5 s
         assertThat(placesClosedStandingAt(-0.5, 20)).isPositive();
+    }
+
+    /**
+     * Sent to the station among other robots (as {@link #onTheWayToTheStationAt}), the robot is put at {@code x} with
+     * {@code pct} left and stands there for {@code seconds}, the battery's command winning each step.
+     *
+     * @return how often the battery scenario asked the mapping to look again ({@code SharedWorld.LOOK_AGAIN}, 0: never)
+     */
+    private static int looksAgainStandingAt(double x, double pct, int seconds) {
+        try (ScenarioKit kit = kit(true)) {
+            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
+            drive(kit, 0, 34, 2.0);
+            kit.robot().gps(x, 0).headingDeg(180).battery(pct);
+            for (int i = 0; i < seconds * 1000 / 32; i++) {
+                kit.step();
+                kit.memory().values().put(SharedMemory.LAST_DECISION, BATTERY + " " + kit.suggestion(BATTERY));
+            }
+            String asked = kit.memory().values().get(SharedWorld.LOOK_AGAIN);
+            return asked == null ? 0 : Integer.parseInt(asked);
+        }
+    }
+
+    /*
+     * Issue 34: held for the battery, robots stood till the time limit with 15 to 26 % left (corridors 14, 16 and 29 of
+     * the generated worlds of four robots): the short way was shut by robots that had since left, or drawn so on the
+     * map. Held 5 s, the robot asks its map to let go of what moved in, at most 3 times a trip (116 of 120 runs, 115
+     * before, no flat battery).
+     */
+    @Test
+    void amongOtherRobotsARobotHeldForTheBatteryLooksAgainEvery5SecondsAtMost3Times() {
+        assertThat(looksAgainStandingAt(5, 12, 4)).as("held 4 s: not yet").isZero();
+        assertThat(looksAgainStandingAt(5, 12, 6)).as("held 6 s: once").isEqualTo(1);
+        assertThat(looksAgainStandingAt(5, 12, 30)).as("held 30 s: three times, no more").isEqualTo(3);
+        assertThat(looksAgainStandingAt(-0.5, 20, 30)).as("not held (the way within what is left): never").isZero();
     }
 
     /**

@@ -54,6 +54,10 @@ public final class MoveToRecharge extends Rule {
     static final double FULL_TOLERANCE_PCT = 0.5;
     /** A scan this far behind the heading is stale: driving blind, milliseconds. */
     static final long STALE_SCAN_MS = 500;
+    /** Held for the battery this long, the robot asks to look again, simulated ms. */
+    static final long LOOK_AGAIN_AFTER_MS = 5_000;
+    /** At most this many asks a trip. */
+    static final int LOOK_AGAIN_LIMIT = 3;
 
     private double xM;
     private double yM;
@@ -72,6 +76,10 @@ public final class MoveToRecharge extends Rule {
     private boolean arrived;
     /** Whether the last command was this rule's own STOP for a way longer than the battery: time so spent is no stall. */
     private boolean heldForBattery;
+    /** Since when it has been held so, or asked last to look again, simulated ms (-1: not held). */
+    private long heldSinceMs = -1;
+    /** How often this trip asked the mapping to look again while held. */
+    private int lookAgains;
     /** When it arrived, simulated ms: it stays {@value #CHARGE_START_MS} ms, until the battery can say whether it charges. */
     private long arrivedMs;
 
@@ -165,6 +173,7 @@ public final class MoveToRecharge extends Rule {
         }
         String command;
         heldForBattery = cannotMakeIt(ctx);
+        lookAgainWhileHeld(ctx);
         if (heldForBattery) {
             command = Steering.STOP; // what is left would run flat on the way the map knows: keep it, stopped, till the way opens
         } else if (status == RouteFollower.Status.BACK_OFF) {
@@ -201,6 +210,29 @@ public final class MoveToRecharge extends Rule {
         }
         double leftM = Math.max(0.0, route.remainingM(position.xM(), position.yM(), xM, yM) - radiusM * AT_STATION_FRACTION);
         return battery.levelPct() < drain.pctPerMetre() * leftM;
+    }
+
+    /**
+     * Held for the battery {@value #LOOK_AGAIN_AFTER_MS} ms, at most {@value #LOOK_AGAIN_LIMIT} times a trip, the
+     * robot asks the mapping to let go of what moved in ({@link SharedWorld#LOOK_AGAIN}): a robot that stood in
+     * the short way may have left, and stopped, this robot's rays cannot see round it.
+     */
+    private void lookAgainWhileHeld(RuleContext ctx) {
+        if (!heldForBattery) {
+            heldSinceMs = -1;
+            return;
+        }
+        long now = position.simTimeMs();
+        if (heldSinceMs < 0) {
+            heldSinceMs = now;
+        }
+        if (lookAgains >= LOOK_AGAIN_LIMIT || now - heldSinceMs < LOOK_AGAIN_AFTER_MS) {
+            return;
+        }
+        lookAgains++;
+        heldSinceMs = now;
+        String asked = ctx.memory().values().get(SharedWorld.LOOK_AGAIN);
+        ctx.memory().values().put(SharedWorld.LOOK_AGAIN, Integer.toString(asked == null ? 1 : Integer.parseInt(asked) + 1));
     }
 
     /** @return the places the route to the station closed after stalls (do not change) */
