@@ -1,5 +1,7 @@
 package org.proactiverobotics.engine.navigation;
 
+import java.util.Map;
+
 /**
  * Whether the robot shares its world with other robots, which it knows only as its sensors see
  * them: obstacles that move. An engine service ({@code ctx.findService(SharedWorld.class)}), given
@@ -27,6 +29,24 @@ public record SharedWorld(long noRouteMs) {
 
     /** The service as a fleet world's engines get it. */
     public static final SharedWorld DEFAULT = new SharedWorld(NO_ROUTE_MS);
+
+    /**
+     * Asks the mapping to look again ({@link #LOOK_AGAIN}): raises the count by one.
+     *
+     * @param values the shared memory's named values ({@code ctx.memory().values()})
+     */
+    public static void askToLookAgain(Map<String, String> values) {
+        values.put(LOOK_AGAIN, Integer.toString(lookAgainAsked(values) + 1));
+    }
+
+    /**
+     * @param values the shared memory's named values
+     * @return how often a rule asked to look again ({@link #LOOK_AGAIN}), 0 when none did
+     */
+    public static int lookAgainAsked(Map<String, String> values) {
+        String asked = values.get(LOOK_AGAIN);
+        return asked == null ? 0 : Integer.parseInt(asked);
+    }
 
     /** Checks the wait. */
     public SharedWorld {

@@ -245,8 +245,7 @@ class BatteryMonitorScenarioTest {
                 kit.step();
                 kit.memory().values().put(SharedMemory.LAST_DECISION, BATTERY + " " + kit.suggestion(BATTERY));
             }
-            String asked = kit.memory().values().get(SharedWorld.LOOK_AGAIN);
-            return asked == null ? 0 : Integer.parseInt(asked);
+            return SharedWorld.lookAgainAsked(kit.memory().values());
         }
     }
 

@@ -231,8 +231,7 @@ public final class MoveToRecharge extends Rule {
         }
         lookAgains++;
         heldSinceMs = now;
-        String asked = ctx.memory().values().get(SharedWorld.LOOK_AGAIN);
-        ctx.memory().values().put(SharedWorld.LOOK_AGAIN, Integer.toString(asked == null ? 1 : Integer.parseInt(asked) + 1));
+        SharedWorld.askToLookAgain(ctx.memory().values());
     }
 
     /** @return the places the route to the station closed after stalls (do not change) */

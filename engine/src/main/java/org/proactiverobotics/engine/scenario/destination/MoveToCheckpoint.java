@@ -167,8 +167,7 @@ public final class MoveToCheckpoint extends Rule {
         }
         lookAgains++;
         lookedAgainMs = position.simTimeMs();
-        String asked = ctx.memory().values().get(SharedWorld.LOOK_AGAIN);
-        ctx.memory().values().put(SharedWorld.LOOK_AGAIN, Integer.toString(asked == null ? 1 : Integer.parseInt(asked) + 1));
+        SharedWorld.askToLookAgain(ctx.memory().values());
     }
 
     /** What the engine knows of why: no plan on its map found a way to the checkpoint for so long. */

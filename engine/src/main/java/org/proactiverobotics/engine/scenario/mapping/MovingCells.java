@@ -25,8 +25,8 @@ import org.proactiverobotics.engine.tables.OccupancyMap;
  * grazing ray took free, drawn again as the robot drove along it, and it is remembered as a faded
  * cell is (a wall that faded behind a robot had it turn back to the very same closed corridor end
  * three times in the generated corridors worlds of four robots; judged by size instead, robots
- * side by side round a station were walls too). At most {@value #CAPACITY} cells are followed (the oldest are dropped)
- * and {@value #FADED_CAPACITY} faded cells remembered (the first ones).
+ * side by side round a station were walls too). At most {@value #CAPACITY} cells are followed
+ * (the oldest are dropped) and {@value #FADED_CAPACITY} faded cells remembered (the first ones).
  * Kept in plain fields: saved with the rule that holds it.
  */
 final class MovingCells {

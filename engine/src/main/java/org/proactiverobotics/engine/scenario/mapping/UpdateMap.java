@@ -105,7 +105,7 @@ public final class UpdateMap extends Rule {
             if (moving == null) {
                 moving = new MovingCells();
             }
-            int asked = lookAgainAsked(ctx);
+            int asked = SharedWorld.lookAgainAsked(ctx.memory().values());
             if (asked > lookedAgain) {
                 lookedAgain = asked;
                 moving.forget(map); // no way left on the map: what moved in goes, the rays draw again what is still there
@@ -121,12 +121,6 @@ public final class UpdateMap extends Rule {
             table.writeChunks(changed, scan.simTimeMs());
             ctx.findService(BeliefObserver.class).ifPresent(b -> b.mapChanged(ctx.iteration(), changed));
         }
-    }
-
-    /** @return how often a rule asked to look again ({@link SharedWorld#LOOK_AGAIN}), 0 when none did */
-    static int lookAgainAsked(RuleContext ctx) {
-        String asked = ctx.memory().values().get(SharedWorld.LOOK_AGAIN);
-        return asked == null ? 0 : Integer.parseInt(asked);
     }
 
     @Override
