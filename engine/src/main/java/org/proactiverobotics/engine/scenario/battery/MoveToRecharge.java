@@ -215,10 +215,12 @@ public final class MoveToRecharge extends Rule {
     /**
      * Held for the battery {@value #LOOK_AGAIN_AFTER_MS} ms, at most {@value #LOOK_AGAIN_LIMIT} times a trip, the
      * robot asks the mapping to let go of what moved in ({@link SharedWorld#LOOK_AGAIN}): a robot that stood in
-     * the short way may have left, and stopped, this robot's rays cannot see round it.
+     * the short way may have left, and stopped, this robot's rays cannot see round it. Only while a checkpoint
+     * waits: a robot that is done loses nothing standing, and one that looked again drove a way that then grew
+     * down to 1.2 % (corridors 15 robot 3 of the generated worlds of four robots).
      */
     private void lookAgainWhileHeld(RuleContext ctx) {
-        if (!heldForBattery) {
+        if (!heldForBattery || ctx.service(MissionTables.class).checkpoints().stream().allMatch(c -> c.reached())) {
             heldSinceMs = -1;
             return;
         }
