@@ -1,5 +1,6 @@
 package org.proactiverobotics.sim2d;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
@@ -111,7 +112,7 @@ public record WorldSpec(
     public WorldSpec forRobot(int index) {
         RobotEntry entry = robots.get(index);
         RechargeStation own = nearestStation(entry.robot());
-        List<RechargeStation> ownFirst = new java.util.ArrayList<>(rechargeStations);
+        List<RechargeStation> ownFirst = new ArrayList<>(rechargeStations);
         ownFirst.remove(own);
         ownFirst.add(0, own);
         return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, entry.robot(), obstacles,
@@ -145,7 +146,7 @@ public record WorldSpec(
 
     /** @return a copy of this world with another robot (for tests and benchmarks) */
     public WorldSpec withRobot(Robot newRobot) {
-        List<RobotEntry> changed = new java.util.ArrayList<>(robots);
+        List<RobotEntry> changed = new ArrayList<>(robots);
         changed.set(0, new RobotEntry(robots.get(0).id(), newRobot, checkpoints));
         return new WorldSpec(name, timeStepMs, maxSimTimeS, seed, arena, newRobot, obstacles, checkpoints,
                 checkpointRadiusM, rechargeStation, battery, changed, rechargeStations);

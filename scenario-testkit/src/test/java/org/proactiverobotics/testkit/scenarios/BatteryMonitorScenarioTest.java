@@ -130,8 +130,7 @@ class BatteryMonitorScenarioTest {
      */
     private static String onTheWayToTheStationAt(boolean shared, double x, double pct) {
         try (ScenarioKit kit = kit(shared)) {
-            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
-            drive(kit, 0, 34, 2.0);
+            sentToTheStation(kit);
             assertThat(kit.scheduled()).contains("BatteryMonitor/MoveToRecharge");
             kit.robot().gps(x, 0).headingDeg(180).battery(pct);
             kit.step(2);
@@ -200,6 +199,22 @@ class BatteryMonitorScenarioTest {
         assertThat(sentBackCirclingShortOfTheLastCheckpoint(true, 25, false)).isBetween(18.5, 19.0);
     }
 
+    /** The station at x = -2, checkpoints at (8, 0) and (8, 3): driven from the origin with 34 %, 2 %/m, it is sent there at x = 2. */
+    private static void sentToTheStation(ScenarioKit kit) {
+        kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
+        drive(kit, 0, 34, 2.0);
+    }
+
+    /** The robot put at {@code x} with {@code pct} left stands there for {@code ms}, the battery's command winning each step. */
+    private static void standAt(ScenarioKit kit, double x, double pct, int ms) {
+        kit.robot().gps(x, 0).headingDeg(180).battery(pct);
+        for (int i = 0; i < ms / 32; i++) {
+            kit.step();
+            // the decision scenario is not in the kit: what it would record, the battery's suggestion won
+            kit.memory().values().put(SharedMemory.LAST_DECISION, BATTERY + " " + kit.suggestion(BATTERY));
+        }
+    }
+
     /**
      * Sent to the station among other robots (as {@link #onTheWayToTheStationAt}), the robot is put at {@code x} with
      * {@code pct} left and stands there for 10 s, the battery's command winning each step.
@@ -208,14 +223,8 @@ class BatteryMonitorScenarioTest {
      */
     private static int placesClosedStandingAt(double x, double pct) {
         try (ScenarioKit kit = kit(true)) {
-            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
-            drive(kit, 0, 34, 2.0);
-            kit.robot().gps(x, 0).headingDeg(180).battery(pct);
-            for (int i = 0; i < 10_000 / 32; i++) {
-                kit.step();
-                // the decision scenario is not in the kit: what it would record, the battery's suggestion won
-                kit.memory().values().put(SharedMemory.LAST_DECISION, BATTERY + " " + kit.suggestion(BATTERY));
-            }
+            sentToTheStation(kit);
+            standAt(kit, x, pct, 10_000);
             return kit.engine().engine().nextQueue().stream().filter(MoveToRecharge.class::isInstance)
                     .map(MoveToRecharge.class::cast).findFirst().orElseThrow().closedPlaces().size();
         }
@@ -246,18 +255,13 @@ class BatteryMonitorScenarioTest {
     /** As above; {@code done}: every checkpoint reached before it stands (a robot that is done, sent to charge). */
     private static int looksAgainStandingAt(double x, double pct, int seconds, boolean done) throws SQLException {
         try (ScenarioKit kit = kit(true)) {
-            kit.mission().station(-2, 0, 100).checkpoint(8, 0).checkpoint(8, 3);
-            drive(kit, 0, 34, 2.0);
+            sentToTheStation(kit);
             if (done) {
                 try (Connection c = kit.database().getConnection(); Statement st = c.createStatement()) {
                     st.executeUpdate("UPDATE checkpoints SET reached = TRUE WHERE robot_id = " + ScenarioKit.ROBOT_ID);
                 }
             }
-            kit.robot().gps(x, 0).headingDeg(180).battery(pct);
-            for (int i = 0; i < seconds * 1000 / 32; i++) {
-                kit.step();
-                kit.memory().values().put(SharedMemory.LAST_DECISION, BATTERY + " " + kit.suggestion(BATTERY));
-            }
+            standAt(kit, x, pct, seconds * 1000);
             return SharedWorld.lookAgainAsked(kit.memory().values());
         }
     }

@@ -12,6 +12,7 @@ import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.ClosedPlaces;
 import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.LookAgainAsks;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.tables.BatteryState;
@@ -54,10 +55,6 @@ public final class MoveToRecharge extends Rule {
     static final double FULL_TOLERANCE_PCT = 0.5;
     /** A scan this far behind the heading is stale: driving blind, milliseconds. */
     static final long STALE_SCAN_MS = 500;
-    /** Held for the battery this long, the robot asks to look again, simulated ms. */
-    static final long LOOK_AGAIN_AFTER_MS = 5_000;
-    /** At most this many asks a trip. */
-    static final int LOOK_AGAIN_LIMIT = 3;
 
     private double xM;
     private double yM;
@@ -76,10 +73,10 @@ public final class MoveToRecharge extends Rule {
     private boolean arrived;
     /** Whether the last command was this rule's own STOP for a way longer than the battery: time so spent is no stall. */
     private boolean heldForBattery;
-    /** Since when it has been held so, or asked last to look again, simulated ms (-1: not held). */
+    /** Since when it has been held so, simulated ms (-1: not held). */
     private long heldSinceMs = -1;
-    /** How often this trip asked the mapping to look again while held. */
-    private int lookAgains;
+    /** Its asks to look again while held, this trip (saved with the rule). */
+    private LookAgainAsks lookAgainAsks = new LookAgainAsks();
     /** When it arrived, simulated ms: it stays {@value #CHARGE_START_MS} ms, until the battery can say whether it charges. */
     private long arrivedMs;
 
@@ -213,7 +210,7 @@ public final class MoveToRecharge extends Rule {
     }
 
     /**
-     * Held for the battery {@value #LOOK_AGAIN_AFTER_MS} ms, at most {@value #LOOK_AGAIN_LIMIT} times a trip, the
+     * Held for the battery {@value LookAgainAsks#AFTER_MS} ms, at most {@value LookAgainAsks#LIMIT} times a trip, the
      * robot asks the mapping to let go of what moved in ({@link SharedWorld#LOOK_AGAIN}): a robot that stood in
      * the short way may have left, and stopped, this robot's rays cannot see round it. Only while a checkpoint
      * waits: a robot that is done loses nothing standing, and one that looked again drove a way that then grew
@@ -224,16 +221,10 @@ public final class MoveToRecharge extends Rule {
             heldSinceMs = -1;
             return;
         }
-        long now = position.simTimeMs();
         if (heldSinceMs < 0) {
-            heldSinceMs = now;
+            heldSinceMs = position.simTimeMs();
         }
-        if (lookAgains >= LOOK_AGAIN_LIMIT || now - heldSinceMs < LOOK_AGAIN_AFTER_MS) {
-            return;
-        }
-        lookAgains++;
-        heldSinceMs = now;
-        SharedWorld.askToLookAgain(ctx.memory().values());
+        lookAgainAsks.askWhenDue(ctx.memory().values(), heldSinceMs, position.simTimeMs());
     }
 
     /** @return the places the route to the station closed after stalls (do not change) */

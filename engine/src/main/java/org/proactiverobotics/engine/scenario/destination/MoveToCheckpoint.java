@@ -9,6 +9,7 @@ import org.proactiverobotics.engine.belief.BeliefObserver;
 import org.proactiverobotics.engine.motion.DriveProfile;
 import org.proactiverobotics.engine.motion.Steering;
 import org.proactiverobotics.engine.navigation.KnownMap;
+import org.proactiverobotics.engine.navigation.LookAgainAsks;
 import org.proactiverobotics.engine.navigation.RouteFollower;
 import org.proactiverobotics.engine.navigation.SharedWorld;
 import org.proactiverobotics.engine.tables.Checkpoint;
@@ -35,15 +36,6 @@ public final class MoveToCheckpoint extends Rule {
 
     /** How long no plan finds a route before the checkpoint is declared unreachable, simulated ms. */
     static final long NO_ROUTE_MS = 3_000;
-    /**
-     * In a shared world, after this long without a route the mapping is asked to let go of the cells
-     * other robots moved into ({@link SharedWorld#LOOK_AGAIN}), simulated ms: a blob a robot left where
-     * the map does not let it fade may be all that walls the way, and the robot, never going back to
-     * look, waited until the checkpoint was declared unreachable (6 robots in 120 worlds of four).
-     */
-    static final long LOOK_AGAIN_AFTER_MS = 5_000;
-    /** ... at most this many times per checkpoint. */
-    static final int LOOK_AGAIN_LIMIT = 3;
 
     private int seq;
     private double xM;
@@ -55,10 +47,8 @@ public final class MoveToCheckpoint extends Rule {
     private int behindSide;
     /** The simulated time since which no plan has found a route, ms (-1: the last plan found one). */
     private long noRouteSinceMs = -1;
-    /** How often this rule asked to look again. */
-    private int lookAgains;
-    /** The simulated time of the last ask, ms (-1: none): the next waits {@value #LOOK_AGAIN_AFTER_MS} ms after it. */
-    private long lookedAgainMs = -1;
+    /** Its asks to look again while no route is found (saved with the rule). */
+    private LookAgainAsks lookAgainAsks = new LookAgainAsks();
 
     private transient PoseEstimate position;
     private transient boolean reached;
@@ -156,18 +146,14 @@ public final class MoveToCheckpoint extends Rule {
     }
 
     /**
-     * In a shared world, after {@value #LOOK_AGAIN_AFTER_MS} ms without a route (and as long after the
+     * In a shared world, after {@value LookAgainAsks#AFTER_MS} ms without a route (and as long after the
      * last ask), asks the mapping to let go of the cells other robots moved into, at most
-     * {@value #LOOK_AGAIN_LIMIT} times: Nav2's clearing of the costmap, for the moving cells alone.
+     * {@value LookAgainAsks#LIMIT} times: Nav2's clearing of the costmap, for the moving cells alone. A blob
+     * a robot left where the map does not let it fade may be all that walls the way, and the robot, never
+     * going back to look, waited until the checkpoint was declared unreachable (6 robots in 120 worlds of four).
      */
     private void lookAgain(RuleContext ctx) {
-        long since = Math.max(noRouteSinceMs, lookedAgainMs);
-        if (lookAgains >= LOOK_AGAIN_LIMIT || position.simTimeMs() - since < LOOK_AGAIN_AFTER_MS) {
-            return;
-        }
-        lookAgains++;
-        lookedAgainMs = position.simTimeMs();
-        SharedWorld.askToLookAgain(ctx.memory().values());
+        lookAgainAsks.askWhenDue(ctx.memory().values(), noRouteSinceMs, position.simTimeMs());
     }
 
     /** What the engine knows of why: no plan on its map found a way to the checkpoint for so long. */

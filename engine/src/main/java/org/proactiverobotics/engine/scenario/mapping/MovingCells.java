@@ -98,7 +98,7 @@ final class MovingCells {
      * its body on the map (null: none) is larger than a robot ({@code span} cells across).
      */
     private void add(OccupancyMap map, int i, int j, int span) {
-        long key = ((long) i << 32) | (j & 0xffffffffL);
+        long key = key(i, j);
         if (Arrays.binarySearch(faded, key) >= 0 && (map == null || !smallBody(map, i, j, span))) {
             return;
         }
@@ -203,7 +203,7 @@ final class MovingCells {
                     if (map.get(ci + a, cj + b) != OccupancyMap.OCCUPIED) {
                         continue;
                     }
-                    int other = Arrays.binarySearch(sorted, 0, count, ((long) (ci + a) << 32) | ((cj + b) & 0xffffffffL));
+                    int other = Arrays.binarySearch(sorted, 0, count, key(ci + a, cj + b));
                     if (other < 0) {
                         wall = true;
                         break;
@@ -306,7 +306,12 @@ final class MovingCells {
     }
 
     private boolean fadedOnce(int i, int j) {
-        return Arrays.binarySearch(faded, ((long) i << 32) | (j & 0xffffffffL)) >= 0;
+        return Arrays.binarySearch(faded, key(i, j)) >= 0;
+    }
+
+    /** @return a cell's key: its column in the high half, its row in the low */
+    private static long key(int i, int j) {
+        return ((long) i << 32) | (j & 0xffffffffL);
     }
 
     private static boolean queued(int[] qi, int[] qj, int n, int i, int j) {
